@@ -1,0 +1,117 @@
+//! The Lie group trait that everything above is generic over.
+
+use crate::{DenseMatrix, LieError, Operator, Vector};
+use core::fmt::Debug;
+
+/// A Lie group G whose algebra 𝔤 is identified with ℝⁿ by `hat`/`vee` in a fixed basis, and whose
+/// dual 𝔤* is identified with ℝⁿ by the Euclidean pairing ⟨μ, ξ⟩ = μ·ξ.
+///
+/// Conventions (see the crate page):
+/// - `ad_ξ η = [ξ, η]`; the dual map `ad*_ξ := (ad_ξ)ᵀ`.
+/// - `Ad_g ξ = (g ξ̂ g⁻¹)ˇ`; the dual map `Ad*_g := (Ad_g)ᵀ`, so the coadjoint *action* of g is
+///   `Ad*_{g⁻¹}`.
+/// - `d^L exp_ξ (η) = exp(ξ)⁻¹ · (d/ds) exp(ξ + s η)|_{s=0}` (left-trivialized tangent; manif's
+///   right Jacobian J_r).
+///
+/// Required methods have closed forms per group; the provided ones derive from them and may be
+/// overridden where a group has something faster (the cross product on 𝔰𝔬(3)).
+pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
+    /// Algebra coordinates, ℝⁿ ≅ 𝔤 (and ℝⁿ ≅ 𝔤*).
+    type Algebra: Vector;
+    /// Linear maps of ℝⁿ (Ad_g, ad_ξ, tangent maps).
+    type Operator: Operator<Self::Algebra>;
+    /// The matrix representation (ℝ^{m×m}) used by `hat`, `matrix` and the generic matrix path.
+    type Matrix: DenseMatrix;
+
+    /// A short name, e.g. `"SO(3)"`.
+    fn name() -> String;
+    /// Dimension n of 𝔤.
+    fn dim() -> usize;
+    /// The identity e.
+    fn identity() -> Self;
+    /// The product `g h`.
+    fn compose(&self, other: &Self) -> Self;
+    /// The inverse `g⁻¹`.
+    fn inverse(&self) -> Self;
+    /// The group exponential exp: 𝔤 → G.
+    fn exp(xi: &Self::Algebra) -> Self;
+    /// The principal logarithm, the local inverse of `exp` (an error where none exists).
+    fn log(&self) -> Result<Self::Algebra, LieError>;
+    /// ξ ↦ ξ̂, algebra coordinates to the algebra matrix.
+    fn hat(xi: &Self::Algebra) -> Self::Matrix;
+    /// ξ̂ ↦ ξ, the inverse of `hat` (the part of the matrix outside 𝔤 is ignored).
+    fn vee(m: &Self::Matrix) -> Self::Algebra;
+    /// The group element as a matrix.
+    fn matrix(&self) -> Self::Matrix;
+    /// Builds an element from its matrix, checking that it lies on the group.
+    fn from_matrix(m: &Self::Matrix) -> Result<Self, LieError>;
+    /// Builds an element from its matrix without any check (for matrices known to be on the group).
+    fn from_matrix_unchecked(m: &Self::Matrix) -> Self;
+    /// The adjoint representation Ad_g as an n×n matrix.
+    fn adjoint(&self) -> Self::Operator;
+    /// ad_ξ as an n×n matrix: `ad_ξ η = [ξ, η]`.
+    fn ad(xi: &Self::Algebra) -> Self::Operator;
+
+    /// `Ad_g ξ`.
+    fn adjoint_apply(&self, xi: &Self::Algebra) -> Self::Algebra {
+        self.adjoint().apply(xi)
+    }
+    /// `Ad*_g μ = (Ad_g)ᵀ μ` (the dual map, not the coadjoint action).
+    fn coadjoint_apply(&self, mu: &Self::Algebra) -> Self::Algebra {
+        self.adjoint().apply_transpose(mu)
+    }
+    /// The bracket `[ξ, η] = ad_ξ η`.
+    fn bracket(xi: &Self::Algebra, eta: &Self::Algebra) -> Self::Algebra {
+        Self::ad(xi).apply(eta)
+    }
+    /// `ad*_ξ μ = (ad_ξ)ᵀ μ`.
+    fn ad_dual_apply(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
+        Self::ad(xi).apply_transpose(mu)
+    }
+    /// `d^L exp_ξ = Σ_k (−ad_ξ)^k / (k+1)! = (I − e^{−ad_ξ}) / ad_ξ`.
+    ///
+    /// The provided form evaluates the series exactly through one block matrix exponential,
+    /// `exp([[−ad_ξ, I], [0, 0]])` (top-right block); groups override it with closed forms.
+    fn dexp_left(xi: &Self::Algebra) -> Self::Operator {
+        let ad = Self::ad(xi).to_mat();
+        let j = crate::matrix::dense::phi1_of_neg(ad.as_ref());
+        Self::Operator::from_mat(j.as_ref()).expect("dexp has the shape of ad")
+    }
+    /// `(d^L exp_ξ)⁻¹`; its entries are non-finite where d^L exp_ξ is singular (for compact groups
+    /// at |ξ| = 2πk, k ≥ 1).
+    fn dexp_left_inv(xi: &Self::Algebra) -> Self::Operator {
+        Self::dexp_left(xi)
+            .try_inverse()
+            .unwrap_or_else(|| nan_operator::<Self>())
+    }
+    /// Whether every entry of the element is finite.
+    fn is_finite(&self) -> bool {
+        let m = self.matrix().to_mat();
+        (0..m.ncols()).all(|j| (0..m.nrows()).all(|i| m[(i, j)].is_finite()))
+    }
+    /// `‖matrix(self) − matrix(other)‖_max`, a distance for comparisons in tests and checks.
+    fn matrix_distance(&self, other: &Self) -> f64 {
+        let a = self.matrix().to_mat();
+        let b = other.matrix().to_mat();
+        let mut best = 0.0f64;
+        for j in 0..a.ncols() {
+            for i in 0..a.nrows() {
+                best = best.max((a[(i, j)] - b[(i, j)]).abs());
+            }
+        }
+        best
+    }
+}
+
+/// An n×n operator of NaNs: what a tangent-map inverse returns outside its domain.
+pub fn nan_operator<G: LieGroup>() -> G::Operator {
+    let n = G::dim();
+    let m = faer::Mat::from_fn(n, n, |_, _| f64::NAN);
+    G::Operator::from_mat(m.as_ref()).expect("n×n operator")
+}
+
+/// A left action of the group on points of type `P` (rotation of vectors, rigid motion of points).
+pub trait Action<P> {
+    /// `g · p`.
+    fn act(&self, p: &P) -> P;
+}

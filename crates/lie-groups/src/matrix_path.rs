@@ -1,0 +1,155 @@
+//! The generic matrix-group path: exp, log, cay, cay⁻¹ and the left-trivialized tangents evaluated
+//! on the matrix representation with dense linear algebra (faer), for any [`LieGroup`].
+//!
+//! SO(n) and GL(n) use these as their implementation; for SO(3), SE(3) and SE(2) they are the
+//! independent reference the closed forms are tested against. None of these are hot paths.
+
+use crate::matrix::dense::{expm, try_inverse, try_solve};
+use crate::{DenseMatrix, LieError, LieGroup, Operator, Vector};
+use faer::{Mat, MatRef};
+
+fn hat_mat<G: LieGroup>(xi: &G::Algebra) -> Mat<f64> {
+    G::hat(xi).to_mat()
+}
+
+fn vee_mat<G: LieGroup>(m: MatRef<'_, f64>) -> G::Algebra {
+    G::vee(&G::Matrix::from_mat(m).expect("matrix of the group's size"))
+}
+
+fn from_mat<G: LieGroup>(m: MatRef<'_, f64>) -> G {
+    G::from_matrix_unchecked(&G::Matrix::from_mat(m).expect("matrix of the group's size"))
+}
+
+/// Builds the n×n operator whose j-th column is `f(eⱼ)`.
+pub fn operator_from_columns<G: LieGroup>(
+    mut f: impl FnMut(&G::Algebra) -> G::Algebra,
+) -> G::Operator {
+    let n = G::dim();
+    let mut m = Mat::zeros(n, n);
+    for j in 0..n {
+        let col = f(&G::Algebra::basis(n, j));
+        for i in 0..n {
+            m[(i, j)] = col.get(i);
+        }
+    }
+    G::Operator::from_mat(m.as_ref()).expect("n×n operator")
+}
+
+/// exp(ξ) = e^{ξ̂} by Padé scaling and squaring.
+pub fn exp<G: LieGroup>(xi: &G::Algebra) -> G {
+    from_mat::<G>(expm(hat_mat::<G>(xi).as_ref()).as_ref())
+}
+
+/// log(g) = (log_m g)ˇ, the principal matrix logarithm by inverse scaling and squaring.
+pub fn log<G: LieGroup>(g: &G) -> Result<G::Algebra, LieError> {
+    let l = crate::matrix::logm::logm(g.matrix().to_mat().as_ref())?;
+    Ok(vee_mat::<G>(l.as_ref()))
+}
+
+/// cay(ξ) = (I − ξ̂/2)⁻¹ (I + ξ̂/2).
+pub fn cay<G: LieGroup>(xi: &G::Algebra) -> G {
+    let a = hat_mat::<G>(xi);
+    let m = a.nrows();
+    let id = Mat::<f64>::identity(m, m);
+    let minus = Mat::from_fn(m, m, |i, j| id[(i, j)] - 0.5 * a[(i, j)]);
+    let plus = Mat::from_fn(m, m, |i, j| id[(i, j)] + 0.5 * a[(i, j)]);
+    match try_solve(minus.as_ref(), plus.as_ref()) {
+        Some(x) => from_mat::<G>(x.as_ref()),
+        None => from_mat::<G>(Mat::from_fn(m, m, |_, _| f64::NAN).as_ref()),
+    }
+}
+
+/// cay⁻¹(g) = (2 (g − I)(g + I)⁻¹)ˇ; an error where g + I is singular (a rotation by π).
+pub fn cay_inv<G: LieGroup>(g: &G) -> Result<G::Algebra, LieError> {
+    let gm = g.matrix().to_mat();
+    let m = gm.nrows();
+    let id = Mat::<f64>::identity(m, m);
+    let plus = &gm + &id;
+    let minus = &gm - &id;
+    let inv = try_inverse(plus.as_ref()).ok_or_else(|| LieError::OutOfDomain {
+        map: "cay⁻¹",
+        reason: "g + I is singular (g has eigenvalue −1)".into(),
+    })?;
+    let a = &minus * &inv;
+    Ok(vee_mat::<G>(
+        Mat::from_fn(m, m, |i, j| 2.0 * a[(i, j)]).as_ref(),
+    ))
+}
+
+/// `d^L cay_ξ (η) = ((I + ξ̂/2)⁻¹ η̂ (I − ξ̂/2)⁻¹)ˇ`.
+pub fn dcay_left<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
+    let a = hat_mat::<G>(xi);
+    let m = a.nrows();
+    let id = Mat::<f64>::identity(m, m);
+    let plus = Mat::from_fn(m, m, |i, j| id[(i, j)] + 0.5 * a[(i, j)]);
+    let minus = Mat::from_fn(m, m, |i, j| id[(i, j)] - 0.5 * a[(i, j)]);
+    let (Some(pi), Some(mi)) = (try_inverse(plus.as_ref()), try_inverse(minus.as_ref())) else {
+        return crate::group::nan_operator::<G>();
+    };
+    operator_from_columns::<G>(|e| {
+        let b = hat_mat::<G>(e);
+        vee_mat::<G>((&(&pi * &b) * &mi).as_ref())
+    })
+}
+
+/// `(d^L cay_ξ)⁻¹ (η) = (η̂ + [ξ̂, η̂]/2 − ξ̂ η̂ ξ̂/4)ˇ`.
+pub fn dcay_left_inv<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
+    let a = hat_mat::<G>(xi);
+    operator_from_columns::<G>(|e| {
+        let b = hat_mat::<G>(e);
+        let ab = &a * &b;
+        let ba = &b * &a;
+        let aba = &ab * &a;
+        let m = a.nrows();
+        vee_mat::<G>(
+            Mat::from_fn(m, m, |i, j| {
+                b[(i, j)] + 0.5 * (ab[(i, j)] - ba[(i, j)]) - 0.25 * aba[(i, j)]
+            })
+            .as_ref(),
+        )
+    })
+}
+
+/// `d^L exp_ξ (η) = (e^{−ξ̂} · (d/ds) e^{ξ̂ + s η̂})ˇ`, the derivative taken exactly as the top-right
+/// block of `exp([[ξ̂, η̂], [0, ξ̂]])` (Van Loan). Independent of the ad-series form.
+pub fn dexp_left<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
+    let a = hat_mat::<G>(xi);
+    let m = a.nrows();
+    let neg: Mat<f64> = Mat::from_fn(m, m, |i, j| -a[(i, j)]);
+    let e_neg = expm(neg.as_ref());
+    operator_from_columns::<G>(|e| {
+        let b = hat_mat::<G>(e);
+        let block = Mat::from_fn(2 * m, 2 * m, |i, j| match (i < m, j < m) {
+            (true, true) => a[(i, j)],
+            (true, false) => b[(i, j - m)],
+            (false, false) => a[(i - m, j - m)],
+            (false, true) => 0.0,
+        });
+        let big = expm(block.as_ref());
+        let d = Mat::from_fn(m, m, |i, j| big[(i, j + m)]);
+        vee_mat::<G>((&e_neg * &d).as_ref())
+    })
+}
+
+/// `(d^L exp_ξ)⁻¹` by inverting [`dexp_left`]; non-finite where it is singular.
+pub fn dexp_left_inv<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
+    dexp_left::<G>(xi)
+        .try_inverse()
+        .unwrap_or_else(|| crate::group::nan_operator::<G>())
+}
+
+/// Ad_g as the operator ξ ↦ (g ξ̂ g⁻¹)ˇ.
+pub fn adjoint<G: LieGroup>(g: &G) -> G::Operator {
+    let gm = g.matrix().to_mat();
+    let gi = g.inverse().matrix().to_mat();
+    operator_from_columns::<G>(|e| vee_mat::<G>((&(&gm * &hat_mat::<G>(e)) * &gi).as_ref()))
+}
+
+/// ad_ξ as the operator η ↦ (ξ̂ η̂ − η̂ ξ̂)ˇ.
+pub fn ad<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
+    let a = hat_mat::<G>(xi);
+    operator_from_columns::<G>(|e| {
+        let b = hat_mat::<G>(e);
+        vee_mat::<G>((&(&a * &b) - &(&b * &a)).as_ref())
+    })
+}

@@ -1,0 +1,112 @@
+//! τ maps (§3.1 of the paper): local diffeomorphisms τ: 𝔤 → G around 0 ↦ e with
+//! τ(ξ) τ(−ξ) = e, used by retractions `g τ(ξ)` and discretization maps.
+//!
+//! A τ map is a type of its own, separate from the group, so that every integrator is generic over
+//! it: [`ExpMap`] works on every [`LieGroup`], [`Cayley`] on every [`CayleyGroup`].
+//!
+//! Tangent maps, in the paper's notation:
+//! - left-trivialized: `d^L τ_ξ (η) = τ(ξ)⁻¹ · (d/ds) τ(ξ + s η)|_{s=0}`;
+//! - right-trivialized: `d^R τ_ξ (η) = (d/ds) τ(ξ + s η)|_{s=0} · τ(ξ)⁻¹`, which equals `d^L τ_{−ξ}`
+//!   because τ(ξ)⁻¹ = τ(−ξ) (differentiate τ(ξ) τ(−ξ) = e);
+//! - duals `d^{L*} τ_ξ`, `d^{R*} τ_ξ` are the transposes under the Euclidean pairing.
+
+use crate::{LieError, LieGroup, Operator, Vector};
+use core::fmt::Debug;
+
+/// A local diffeomorphism τ: 𝔤 → G with τ(0) = e, d τ_0 = id and τ(ξ) τ(−ξ) = e.
+pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
+    /// Short name: `"exp"` or `"cayley"`.
+    const NAME: &'static str;
+
+    /// τ(ξ).
+    fn tau(xi: &G::Algebra) -> G;
+    /// τ⁻¹(g), the local inverse; an error outside its domain.
+    fn tau_inv(g: &G) -> Result<G::Algebra, LieError>;
+    /// `d^L τ_ξ`.
+    fn dtau_left(xi: &G::Algebra) -> G::Operator;
+    /// `(d^L τ_ξ)⁻¹`; non-finite entries where d^L τ_ξ is singular.
+    fn dtau_left_inv(xi: &G::Algebra) -> G::Operator;
+
+    /// `d^R τ_ξ = d^L τ_{−ξ}`.
+    fn dtau_right(xi: &G::Algebra) -> G::Operator {
+        Self::dtau_left(&xi.neg())
+    }
+    /// `(d^R τ_ξ)⁻¹ = (d^L τ_{−ξ})⁻¹`.
+    fn dtau_right_inv(xi: &G::Algebra) -> G::Operator {
+        Self::dtau_left_inv(&xi.neg())
+    }
+    /// `d^{L*} τ_ξ μ = (d^L τ_ξ)ᵀ μ`.
+    fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        Self::dtau_left(xi).apply_transpose(mu)
+    }
+    /// `d^{R*} τ_ξ μ = (d^R τ_ξ)ᵀ μ`.
+    fn dtau_right_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        Self::dtau_right(xi).apply_transpose(mu)
+    }
+}
+
+/// τ = exp, the group exponential, on every Lie group.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ExpMap;
+
+impl<G: LieGroup> Tau<G> for ExpMap {
+    const NAME: &'static str = "exp";
+    #[inline]
+    fn tau(xi: &G::Algebra) -> G {
+        G::exp(xi)
+    }
+    #[inline]
+    fn tau_inv(g: &G) -> Result<G::Algebra, LieError> {
+        g.log()
+    }
+    #[inline]
+    fn dtau_left(xi: &G::Algebra) -> G::Operator {
+        G::dexp_left(xi)
+    }
+    #[inline]
+    fn dtau_left_inv(xi: &G::Algebra) -> G::Operator {
+        G::dexp_left_inv(xi)
+    }
+}
+
+/// A group with a Cayley map `cay(ξ) = (I − ξ̂/2)⁻¹ (I + ξ̂/2)` (quadratic matrix groups: SO(n),
+/// SE(n), and GL(n) away from eigenvalue −2 of ξ̂).
+///
+/// The left-trivialized tangent and its inverse, as maps of algebra matrices, are
+/// `d^L cay_ξ (η) = (I + ξ̂/2)⁻¹ η̂ (I − ξ̂/2)⁻¹` and
+/// `(d^L cay_ξ)⁻¹ (η) = η̂ + [ξ̂, η̂]/2 − ξ̂ η̂ ξ̂/4`; groups implement closed forms in coordinates
+/// and [`crate::matrix_path`] gives the generic matrix evaluation they are tested against.
+pub trait CayleyGroup: LieGroup {
+    /// cay(ξ).
+    fn cay(xi: &Self::Algebra) -> Self;
+    /// cay⁻¹(g) = 2 (g − I)(g + I)⁻¹ read back through `vee`; an error where g + I is singular.
+    fn cay_inv(&self) -> Result<Self::Algebra, LieError>;
+    /// `d^L cay_ξ`.
+    fn dcay_left(xi: &Self::Algebra) -> Self::Operator;
+    /// `(d^L cay_ξ)⁻¹`.
+    fn dcay_left_inv(xi: &Self::Algebra) -> Self::Operator;
+}
+
+/// τ = cay, the Cayley map, on every [`CayleyGroup`].
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Cayley;
+
+impl<G: CayleyGroup> Tau<G> for Cayley {
+    const NAME: &'static str = "cayley";
+    #[inline]
+    fn tau(xi: &G::Algebra) -> G {
+        G::cay(xi)
+    }
+    #[inline]
+    fn tau_inv(g: &G) -> Result<G::Algebra, LieError> {
+        g.cay_inv()
+    }
+    #[inline]
+    fn dtau_left(xi: &G::Algebra) -> G::Operator {
+        G::dcay_left(xi)
+    }
+    #[inline]
+    fn dtau_left_inv(xi: &G::Algebra) -> G::Operator {
+        G::dcay_left_inv(xi)
+    }
+}

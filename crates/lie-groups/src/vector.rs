@@ -1,0 +1,159 @@
+//! Algebra coordinates: the vector space ℝⁿ ≅ 𝔤 (by `hat`/`vee`) and ℝⁿ ≅ 𝔤* (by the Euclidean
+//! pairing ⟨μ, ξ⟩ = μ·ξ).
+//!
+//! Fixed-size groups use nalgebra's stack vectors [`SVector`]; groups whose dimension is only known
+//! through a large `n` (SO(n), GL(n)) use faer's [`Col`]. Bundles pair two such vectors
+//! (`trivial_bundles::Pair`). Everything generic in the workspace goes through this trait.
+
+use core::fmt::Debug;
+use faer::Col;
+use nalgebra::SVector;
+
+/// An element of ℝⁿ used as coordinates of 𝔤 or 𝔤*.
+///
+/// All operations are by value and allocate nothing for stack types.
+pub trait Vector: Clone + Debug + PartialEq + Send + Sync + 'static {
+    /// The zero vector of dimension `dim` (fixed-size types ignore `dim` but check it in debug).
+    fn zeros(dim: usize) -> Self;
+    /// Dimension n.
+    fn dim(&self) -> usize;
+    /// Component `i`.
+    fn get(&self, i: usize) -> f64;
+    /// Sets component `i`.
+    fn set(&mut self, i: usize, value: f64);
+    /// `self + other`.
+    fn add(&self, other: &Self) -> Self;
+    /// `self − other`.
+    fn sub(&self, other: &Self) -> Self;
+    /// `s · self`.
+    fn scale(&self, s: f64) -> Self;
+    /// Euclidean pairing `self · other` (the pairing ⟨μ, ξ⟩ of 𝔤* with 𝔤).
+    fn dot(&self, other: &Self) -> f64;
+
+    /// `−self`.
+    fn neg(&self) -> Self {
+        self.scale(-1.0)
+    }
+    /// `self + s · other`.
+    fn axpy(&self, s: f64, other: &Self) -> Self {
+        self.add(&other.scale(s))
+    }
+    /// Euclidean norm.
+    fn norm(&self) -> f64 {
+        self.dot(self).sqrt()
+    }
+    /// Largest absolute component.
+    fn norm_max(&self) -> f64 {
+        (0..self.dim()).fold(0.0, |m, i| f64::max(m, self.get(i).abs()))
+    }
+    /// Whether every component is finite.
+    fn is_finite(&self) -> bool {
+        (0..self.dim()).all(|i| self.get(i).is_finite())
+    }
+    /// The i-th unit vector eᵢ of dimension `dim`.
+    fn basis(dim: usize, i: usize) -> Self {
+        let mut e = Self::zeros(dim);
+        e.set(i, 1.0);
+        e
+    }
+    /// Builds a vector of dimension `dim` from its components.
+    fn from_fn(dim: usize, mut f: impl FnMut(usize) -> f64) -> Self {
+        let mut v = Self::zeros(dim);
+        for i in 0..dim {
+            v.set(i, f(i));
+        }
+        v
+    }
+    /// The components as a faer column (for dense linear algebra).
+    fn to_col(&self) -> Col<f64> {
+        Col::from_fn(self.dim(), |i| self.get(i))
+    }
+    /// The components as a `Vec` (for output and tests).
+    fn to_vec(&self) -> Vec<f64> {
+        (0..self.dim()).map(|i| self.get(i)).collect()
+    }
+    /// Builds a vector from a faer column.
+    fn from_col(c: &Col<f64>) -> Self {
+        Self::from_fn(c.nrows(), |i| c[i])
+    }
+}
+
+impl<const N: usize> Vector for SVector<f64, N> {
+    #[inline]
+    fn zeros(dim: usize) -> Self {
+        debug_assert_eq!(
+            dim, N,
+            "fixed-size vector of dimension {N} asked for dimension {dim}"
+        );
+        SVector::zeros()
+    }
+    #[inline]
+    fn dim(&self) -> usize {
+        N
+    }
+    #[inline]
+    fn get(&self, i: usize) -> f64 {
+        self[i]
+    }
+    #[inline]
+    fn set(&mut self, i: usize, value: f64) {
+        self[i] = value;
+    }
+    #[inline]
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+    #[inline]
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+    #[inline]
+    fn scale(&self, s: f64) -> Self {
+        self * s
+    }
+    #[inline]
+    fn dot(&self, other: &Self) -> f64 {
+        nalgebra::Matrix::dot(self, other)
+    }
+    #[inline]
+    fn neg(&self) -> Self {
+        -self
+    }
+    #[inline]
+    fn norm(&self) -> f64 {
+        nalgebra::Matrix::norm(self)
+    }
+}
+
+impl Vector for Col<f64> {
+    fn zeros(dim: usize) -> Self {
+        Col::zeros(dim)
+    }
+    fn dim(&self) -> usize {
+        self.nrows()
+    }
+    fn get(&self, i: usize) -> f64 {
+        self[i]
+    }
+    fn set(&mut self, i: usize, value: f64) {
+        self[i] = value;
+    }
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+    fn scale(&self, s: f64) -> Self {
+        Col::from_fn(self.nrows(), |i| s * self[i])
+    }
+    fn dot(&self, other: &Self) -> f64 {
+        (0..self.nrows()).map(|i| self[i] * other[i]).sum()
+    }
+    fn to_col(&self) -> Col<f64> {
+        self.clone()
+    }
+    fn from_col(c: &Col<f64>) -> Self {
+        c.clone()
+    }
+}

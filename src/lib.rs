@@ -1,0 +1,9 @@
+//! Umbrella crate of the workspace: re-exports the layered crates so that the top-level benchmarks
+//! and examples can reach all of them through one dependency.
+//!
+//! Users depend on the layer they need (`lie-groups`, `trivial-bundles`, `discretization`,
+//! `integrators`); this crate only gathers them.
+pub use discretization;
+pub use integrators;
+pub use lie_groups;
+pub use trivial_bundles;
