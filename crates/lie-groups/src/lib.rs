@@ -35,11 +35,16 @@
 
 #![warn(missing_docs)]
 
+mod convert;
 mod error;
 mod group;
 pub mod matrix;
 pub mod matrix_path;
 mod operator;
+pub mod se2;
+pub mod se3;
+pub mod so2;
+pub mod so3;
 mod tau;
 mod vector;
 
@@ -48,6 +53,11 @@ pub mod testing;
 
 pub use error::LieError;
 pub use group::{nan_operator, Action, LieGroup};
+pub use matrix::{GlN, SoN};
 pub use operator::{DenseMatrix, Operator};
+pub use se2::Se2;
+pub use se3::Se3;
+pub use so2::So2;
+pub use so3::So3;
 pub use tau::{Cayley, CayleyGroup, ExpMap, Tau};
 pub use vector::Vector;

@@ -17,6 +17,9 @@ use core::fmt::Debug;
 pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     /// Short name: `"exp"` or `"cayley"`.
     const NAME: &'static str;
+    /// Whether s ↦ τ(sξ) is a one-parameter subgroup, τ(sξ) τ(tξ) = τ((s+t)ξ) (true for exp only).
+    /// Discretization maps use it: then τ(θξ) τ((1−θ)ξ) = τ(ξ) and R̃_d inverts in closed form.
+    const ONE_PARAMETER_SUBGROUP: bool = false;
 
     /// τ(ξ).
     fn tau(xi: &G::Algebra) -> G;
@@ -51,6 +54,7 @@ pub struct ExpMap;
 
 impl<G: LieGroup> Tau<G> for ExpMap {
     const NAME: &'static str = "exp";
+    const ONE_PARAMETER_SUBGROUP: bool = true;
     #[inline]
     fn tau(xi: &G::Algebra) -> G {
         G::exp(xi)

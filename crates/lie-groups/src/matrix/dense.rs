@@ -10,11 +10,18 @@ use faer::{
 /// Reciprocal-condition threshold below which a matrix is treated as singular.
 const SINGULAR_RCOND: f64 = 1e-14;
 
-/// `‖A‖₁`, the maximum absolute column sum.
+/// `‖A‖₁`, the maximum absolute column sum; NaN if any entry is NaN (`f64::max` alone would
+/// silently drop NaN columns and make a singular matrix look well conditioned).
 pub fn norm1(a: MatRef<'_, f64>) -> f64 {
-    (0..a.ncols())
-        .map(|j| (0..a.nrows()).map(|i| a[(i, j)].abs()).sum::<f64>())
-        .fold(0.0, f64::max)
+    let mut best = 0.0f64;
+    for j in 0..a.ncols() {
+        let s = (0..a.nrows()).map(|i| a[(i, j)].abs()).sum::<f64>();
+        if s.is_nan() {
+            return f64::NAN;
+        }
+        best = best.max(s);
+    }
+    best
 }
 
 /// A⁻¹ by LU with partial pivoting, or `None` when A is singular to working precision
@@ -114,13 +121,7 @@ pub fn phi1_of_neg(x: MatRef<'_, f64>) -> Mat<f64> {
     let n = x.nrows();
     let block = Mat::from_fn(2 * n, 2 * n, |i, j| match (i < n, j < n) {
         (true, true) => -x[(i, j)],
-        (true, false) => {
-            if i == j - n {
-                1.0
-            } else {
-                0.0
-            }
-        }
+        (true, false) if i == j - n => 1.0,
         _ => 0.0,
     });
     let e = expm(block.as_ref());

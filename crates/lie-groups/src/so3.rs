@@ -1,0 +1,401 @@
+//! SO(3), the rotation group of ℝ³, on a stack `Matrix3<f64>`.
+//!
+//! - Algebra 𝔰𝔬(3) ≅ ℝ³ by `hat(ω) = ω̂`, the cross-product matrix (`ω̂ x = ω × x`).
+//! - `Ad_R = R`, `ad_ω = ω̂`, `[ω, η] = ω × η`, `Ad*_R μ = Rᵀ μ`, `ad*_ω μ = ω̂ᵀ μ = μ × ω`.
+//! - Every closed form below is written with θ = |ω| and carries a Taylor branch for small θ
+//!   (below [`SMALL_ANGLE`]), so that |ω| = 1e-8 and ω = 0 give full double precision and no 0/0.
+
+use crate::{Action, CayleyGroup, LieError, LieGroup};
+use nalgebra::{Matrix3, Vector3};
+
+/// Default tolerance of the checked constructors: `‖RᵀR − I‖_max ≤ 1e-9` and `|det R − 1| ≤ 1e-9`.
+///
+/// Loose enough to accept rotations that went through a few thousand products or a text round trip,
+/// tight enough that the group laws hold to ~1e-9 afterwards. Use
+/// [`So3::from_matrix_with_tolerance`] for another value, [`So3::project`] to repair a matrix.
+pub const ORTHOGONALITY_TOLERANCE: f64 = 1e-9;
+
+/// Angle below which the Taylor branches are used (θ < 0.1). The series are truncated after the
+/// θ⁶ or θ⁸ term, so the first dropped term is below 1e-16 relative to the leading one at θ = 0.1;
+/// above it the closed forms lose at most ~1e-15 absolutely to cancellation.
+pub const SMALL_ANGLE: f64 = 0.1;
+const SMALL_ANGLE_SQ: f64 = SMALL_ANGLE * SMALL_ANGLE;
+
+/// An element R of SO(3): a 3×3 rotation matrix (RᵀR = I, det R = +1), stored on the stack.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct So3 {
+    r: Matrix3<f64>,
+}
+
+/// The cross-product matrix ω̂ = `[[0, −ω₃, ω₂], [ω₃, 0, −ω₁], [−ω₂, ω₁, 0]]`.
+#[inline]
+pub(crate) fn skew(w: &Vector3<f64>) -> Matrix3<f64> {
+    Matrix3::new(0.0, -w.z, w.y, w.z, 0.0, -w.x, -w.y, w.x, 0.0)
+}
+
+/// `sin θ / θ = 1 − θ²/6 + θ⁴/120 − θ⁶/5040 + θ⁸/362880 − …`.
+#[inline]
+pub(crate) fn sinc(t2: f64) -> f64 {
+    if t2 < SMALL_ANGLE_SQ {
+        1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0 * (1.0 - t2 / 72.0)))
+    } else {
+        let t = t2.sqrt();
+        t.sin() / t
+    }
+}
+
+/// `(1 − cos θ)/θ² = 1/2 − θ²/24 + θ⁴/720 − θ⁶/40320 + θ⁸/3628800 − …`.
+///
+/// Evaluated as `½ (sin(θ/2)/(θ/2))²` away from 0, which has no cancellation.
+#[inline]
+pub(crate) fn cosc(t2: f64) -> f64 {
+    if t2 < SMALL_ANGLE_SQ {
+        0.5 * (1.0 - t2 / 12.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0 * (1.0 - t2 / 90.0))))
+    } else {
+        let h = 0.5 * t2.sqrt();
+        let s = h.sin() / h;
+        0.5 * s * s
+    }
+}
+
+/// `(θ − sin θ)/θ³ = 1/6 − θ²/120 + θ⁴/5040 − θ⁶/362880 + θ⁸/39916800 − …`.
+#[inline]
+pub(crate) fn sinc3(t2: f64) -> f64 {
+    if t2 < SMALL_ANGLE_SQ {
+        (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0 * (1.0 - t2 / 72.0 * (1.0 - t2 / 110.0)))) / 6.0
+    } else {
+        let t = t2.sqrt();
+        (t - t.sin()) / (t * t2)
+    }
+}
+
+/// `(1 − (θ/2) cot(θ/2))/θ² = 1/θ² − (1 + cos θ)/(2θ sin θ)
+///  = 1/12 + θ²/720 + θ⁴/30240 + θ⁶/1209600 + …` (from x cot x = 1 − x²/3 − x⁴/45 − 2x⁶/945 − x⁸/4725).
+///
+/// Finite on [0, 2π); infinite at θ = 2π, where d^L exp is singular.
+#[inline]
+pub(crate) fn dexp_inv_coeff(t2: f64) -> f64 {
+    if t2 < SMALL_ANGLE_SQ {
+        1.0 / 12.0 + t2 * (1.0 / 720.0 + t2 * (1.0 / 30240.0 + t2 / 1209600.0))
+    } else {
+        let h = 0.5 * t2.sqrt();
+        (1.0 - h * h.cos() / h.sin()) / t2
+    }
+}
+
+impl So3 {
+    /// The rotation matrix R.
+    #[inline]
+    pub fn as_matrix(&self) -> &Matrix3<f64> {
+        &self.r
+    }
+
+    /// Checked constructor with an explicit tolerance: refuses non-finite entries
+    /// ([`LieError::NonFinite`]), `‖RᵀR − I‖_max > tolerance` ([`LieError::NotOrthogonal`]) and
+    /// `|det R − 1| > tolerance` ([`LieError::WrongDeterminant`], e.g. a reflection).
+    pub fn from_matrix_with_tolerance(m: &Matrix3<f64>, tolerance: f64) -> Result<Self, LieError> {
+        if !m.iter().all(|x| x.is_finite()) {
+            return Err(LieError::NonFinite {
+                what: "rotation matrix",
+            });
+        }
+        let error = (m.transpose() * m - Matrix3::identity()).amax();
+        if error > tolerance {
+            return Err(LieError::NotOrthogonal { error, tolerance });
+        }
+        let det = m.determinant();
+        if (det - 1.0).abs() > tolerance {
+            return Err(LieError::WrongDeterminant { det, tolerance });
+        }
+        Ok(Self { r: *m })
+    }
+
+    /// The nearest rotation to `m` in the Frobenius norm (orthogonal polar factor with the
+    /// determinant fixed to +1): with `m = U Σ Vᵀ`, `R = U diag(1, 1, sign det(UVᵀ)) Vᵀ`.
+    ///
+    /// Errors: [`LieError::NonFinite`] on NaN/inf, [`LieError::Singular`] when `m` has rank < 2
+    /// (σ₂ ≤ 1e-14 σ₁, including the zero matrix), where the nearest rotation is not unique.
+    pub fn project(m: &Matrix3<f64>) -> Result<Self, LieError> {
+        if !m.iter().all(|x| x.is_finite()) {
+            return Err(LieError::NonFinite {
+                what: "matrix to project",
+            });
+        }
+        let svd = m.svd(true, true);
+        // nalgebra sorts singular values in decreasing order.
+        let s = svd.singular_values;
+        let rcond = if s[0] > 0.0 { s[1] / s[0] } else { 0.0 };
+        if rcond <= 1e-14 {
+            return Err(LieError::Singular { rcond });
+        }
+        let (Some(u), Some(v_t)) = (svd.u, svd.v_t) else {
+            return Err(LieError::Singular { rcond });
+        };
+        let mut d = Matrix3::identity();
+        if (u * v_t).determinant() < 0.0 {
+            d[(2, 2)] = -1.0;
+        }
+        Ok(Self { r: u * d * v_t })
+    }
+
+    /// The nearest rotation to this (possibly drifted) element, see [`So3::project`]; returns the
+    /// element unchanged if it cannot be projected (non-finite or rank < 2 entries).
+    pub fn renormalize(&self) -> Self {
+        Self::project(&self.r).unwrap_or(*self)
+    }
+
+    /// Rotation by `angle` about `axis` (normalised here): `exp(angle · axis/|axis|)`.
+    /// Errors: non-finite input, or a zero axis ([`LieError::OutOfDomain`]).
+    pub fn from_axis_angle(axis: &Vector3<f64>, angle: f64) -> Result<Self, LieError> {
+        if !axis.iter().all(|x| x.is_finite()) || !angle.is_finite() {
+            return Err(LieError::NonFinite {
+                what: "axis or angle",
+            });
+        }
+        let n = axis.norm();
+        if n == 0.0 {
+            return Err(LieError::OutOfDomain {
+                map: "from_axis_angle",
+                reason: "the axis is the zero vector".into(),
+            });
+        }
+        Ok(<Self as LieGroup>::exp(&(axis * (angle / n))))
+    }
+
+    /// `exp(ω)` for a rotation vector ω (axis ω/|ω|, angle |ω|, any magnitude).
+    #[inline]
+    pub fn from_rotation_vector(omega: &Vector3<f64>) -> Self {
+        <Self as LieGroup>::exp(omega)
+    }
+
+    /// The rotation angle θ ∈ [0, π] (robust near 0 and π: `atan2(|vee(R − Rᵀ)|/2, (tr R − 1)/2)`).
+    pub fn angle(&self) -> f64 {
+        let (s, c) = self.sin_cos_parts();
+        s.norm().atan2(c)
+    }
+
+    /// `(vee(R − Rᵀ)/2, (tr R − 1)/2)` = `(sin θ · n, cos θ)`.
+    #[inline]
+    fn sin_cos_parts(&self) -> (Vector3<f64>, f64) {
+        let r = &self.r;
+        let s = 0.5
+            * Vector3::new(
+                r[(2, 1)] - r[(1, 2)],
+                r[(0, 2)] - r[(2, 0)],
+                r[(1, 0)] - r[(0, 1)],
+            );
+        let c = 0.5 * (r.trace() - 1.0);
+        (s, c)
+    }
+}
+
+impl LieGroup for So3 {
+    type Algebra = Vector3<f64>;
+    type Operator = Matrix3<f64>;
+    type Matrix = Matrix3<f64>;
+
+    fn name() -> String {
+        "SO(3)".into()
+    }
+    #[inline]
+    fn dim() -> usize {
+        3
+    }
+    #[inline]
+    fn identity() -> Self {
+        Self {
+            r: Matrix3::identity(),
+        }
+    }
+    #[inline]
+    fn compose(&self, other: &Self) -> Self {
+        Self {
+            r: self.r * other.r,
+        }
+    }
+    /// `R⁻¹ = Rᵀ`.
+    #[inline]
+    fn inverse(&self) -> Self {
+        Self {
+            r: self.r.transpose(),
+        }
+    }
+    /// Rodrigues: `exp(ω) = I + (sin θ/θ) ω̂ + ((1 − cos θ)/θ²) ω̂²`, θ = |ω| (any θ, also > π).
+    #[inline]
+    fn exp(w: &Vector3<f64>) -> Self {
+        let t2 = w.norm_squared();
+        let k = skew(w);
+        Self {
+            r: Matrix3::identity() + k * sinc(t2) + k * k * cosc(t2),
+        }
+    }
+    /// The principal logarithm, θ ∈ [0, π].
+    ///
+    /// θ = atan2(|s|, c) with `s = vee(R − Rᵀ)/2 = sin θ · n` and `c = (tr R − 1)/2`, accurate to
+    /// round-off everywhere. For c ≥ 0 the axis is `s/|s|` (so ω = (θ/|s|) s, and ω = s at
+    /// s = 0); for c < 0 the axis comes from the symmetric part
+    /// `(R + Rᵀ)/2 − c I = (1 − cos θ) n nᵀ` (its largest column), with the sign of `s`, so that
+    /// at θ = π − 1e-10 the result is accurate to ~1e-15 and at θ = π exactly it is one of the two
+    /// valid answers ±π n (the one whose largest component is positive). Never NaN for a rotation;
+    /// [`LieError::NonFinite`] for non-finite input.
+    fn log(&self) -> Result<Vector3<f64>, LieError> {
+        if !self.r.iter().all(|x| x.is_finite()) {
+            return Err(LieError::NonFinite {
+                what: "rotation matrix",
+            });
+        }
+        let (s, c) = self.sin_cos_parts();
+        let sn = s.norm();
+        let theta = sn.atan2(c);
+        if c >= 0.0 {
+            // θ ≤ π/2: |s| = sin θ is a well-conditioned measure of the axis.
+            if sn == 0.0 {
+                return Ok(s);
+            }
+            return Ok(s * (theta / sn));
+        }
+        // θ > π/2: B = (1 − c) n nᵀ from the symmetric part; its largest diagonal entry is ≥ (1 − c)/3.
+        let b = 0.5 * (self.r + self.r.transpose()) - Matrix3::identity() * c;
+        let i = if b[(0, 0)] >= b[(1, 1)] && b[(0, 0)] >= b[(2, 2)] {
+            0
+        } else if b[(1, 1)] >= b[(2, 2)] {
+            1
+        } else {
+            2
+        };
+        let col = b.column(i).into_owned();
+        let n = col / col.norm();
+        let sign = match n.dot(&s) {
+            d if d > 0.0 => 1.0,
+            d if d < 0.0 => -1.0,
+            // θ = π exactly: ±π n are both logarithms; pick the one with positive n_i.
+            _ => 1.0,
+        };
+        Ok(n * (sign * theta))
+    }
+    #[inline]
+    fn hat(w: &Vector3<f64>) -> Matrix3<f64> {
+        skew(w)
+    }
+    /// Reads ω from the skew part `(m − mᵀ)/2` (the symmetric part is ignored).
+    #[inline]
+    fn vee(m: &Matrix3<f64>) -> Vector3<f64> {
+        0.5 * Vector3::new(
+            m[(2, 1)] - m[(1, 2)],
+            m[(0, 2)] - m[(2, 0)],
+            m[(1, 0)] - m[(0, 1)],
+        )
+    }
+    #[inline]
+    fn matrix(&self) -> Matrix3<f64> {
+        self.r
+    }
+    /// Checked with [`ORTHOGONALITY_TOLERANCE`], see [`So3::from_matrix_with_tolerance`].
+    fn from_matrix(m: &Matrix3<f64>) -> Result<Self, LieError> {
+        Self::from_matrix_with_tolerance(m, ORTHOGONALITY_TOLERANCE)
+    }
+    #[inline]
+    fn from_matrix_unchecked(m: &Matrix3<f64>) -> Self {
+        Self { r: *m }
+    }
+    /// `Ad_R = R`.
+    #[inline]
+    fn adjoint(&self) -> Matrix3<f64> {
+        self.r
+    }
+    /// `ad_ω = ω̂`.
+    #[inline]
+    fn ad(w: &Vector3<f64>) -> Matrix3<f64> {
+        skew(w)
+    }
+    /// `Ad_R ξ = R ξ`.
+    #[inline]
+    fn adjoint_apply(&self, xi: &Vector3<f64>) -> Vector3<f64> {
+        self.r * xi
+    }
+    /// `Ad*_R μ = Rᵀ μ`.
+    #[inline]
+    fn coadjoint_apply(&self, mu: &Vector3<f64>) -> Vector3<f64> {
+        self.r.tr_mul(mu)
+    }
+    /// `[ξ, η] = ξ × η`.
+    #[inline]
+    fn bracket(xi: &Vector3<f64>, eta: &Vector3<f64>) -> Vector3<f64> {
+        xi.cross(eta)
+    }
+    /// `ad*_ξ μ = ξ̂ᵀ μ = μ × ξ`.
+    #[inline]
+    fn ad_dual_apply(xi: &Vector3<f64>, mu: &Vector3<f64>) -> Vector3<f64> {
+        mu.cross(xi)
+    }
+    /// `d^L exp_ω = I − ((1 − cos θ)/θ²) ω̂ + ((θ − sin θ)/θ³) ω̂²` (the right Jacobian J_r).
+    #[inline]
+    fn dexp_left(w: &Vector3<f64>) -> Matrix3<f64> {
+        let t2 = w.norm_squared();
+        let k = skew(w);
+        Matrix3::identity() - k * cosc(t2) + k * k * sinc3(t2)
+    }
+    /// `(d^L exp_ω)⁻¹ = I + ω̂/2 + (1/θ² − (1 + cos θ)/(2θ sin θ)) ω̂²`; infinite entries at θ = 2π.
+    #[inline]
+    fn dexp_left_inv(w: &Vector3<f64>) -> Matrix3<f64> {
+        let t2 = w.norm_squared();
+        let k = skew(w);
+        Matrix3::identity() + k * 0.5 + k * k * dexp_inv_coeff(t2)
+    }
+    #[inline]
+    fn is_finite(&self) -> bool {
+        self.r.iter().all(|x| x.is_finite())
+    }
+    #[inline]
+    fn matrix_distance(&self, other: &Self) -> f64 {
+        (self.r - other.r).amax()
+    }
+}
+
+impl CayleyGroup for So3 {
+    /// `cay(ω) = (I − ω̂/2)⁻¹(I + ω̂/2) = I + 4/(4 + θ²) (ω̂ + ω̂²/2)`.
+    #[inline]
+    fn cay(w: &Vector3<f64>) -> Self {
+        let k = skew(w);
+        let a = 4.0 / (4.0 + w.norm_squared());
+        Self {
+            r: Matrix3::identity() + (k + k * k * 0.5) * a,
+        }
+    }
+    /// `cay⁻¹(R) = 2 vee(R − Rᵀ)/(1 + tr R)` (the closed form of `2 (R − I)(R + I)⁻¹`); an error
+    /// where `1 + tr R ≤ 1e-14`, i.e. at rotations by π, where R + I is singular.
+    fn cay_inv(&self) -> Result<Vector3<f64>, LieError> {
+        if !self.is_finite() {
+            return Err(LieError::NonFinite {
+                what: "rotation matrix",
+            });
+        }
+        let den = 1.0 + self.r.trace();
+        if den <= 1e-14 {
+            return Err(LieError::OutOfDomain {
+                map: "cay⁻¹",
+                reason: format!("1 + tr R = {den:.3e}: a rotation by π has no Cayley coordinates"),
+            });
+        }
+        let (s, _) = self.sin_cos_parts();
+        Ok(s * (4.0 / den))
+    }
+    /// `d^L cay_ω = 2/(4 + θ²) (2I − ω̂)`.
+    #[inline]
+    fn dcay_left(w: &Vector3<f64>) -> Matrix3<f64> {
+        (Matrix3::identity() * 2.0 - skew(w)) * (2.0 / (4.0 + w.norm_squared()))
+    }
+    /// `(d^L cay_ω)⁻¹ = I + ω̂/2 + ω ωᵀ/4`.
+    #[inline]
+    fn dcay_left_inv(w: &Vector3<f64>) -> Matrix3<f64> {
+        Matrix3::identity() + skew(w) * 0.5 + w * w.transpose() * 0.25
+    }
+}
+
+/// Rotation of vectors: `R · p`.
+impl Action<Vector3<f64>> for So3 {
+    #[inline]
+    fn act(&self, p: &Vector3<f64>) -> Vector3<f64> {
+        self.r * p
+    }
+}
