@@ -1,1 +1,317 @@
-fn main() {}
+//! `lie-sim`: simulate mechanical systems on Lie groups from TOML scenes, plot trajectories, and
+//! measure the speed–accuracy trade of the integrators.
+//!
+//! ```text
+//! lie-sim                                   run the embedded default scene (tumbling rigid body)
+//! lie-sim run SCENE.toml --out traj.csv     run a scene, write its trajectory as CSV
+//! lie-sim plot traj.csv --out plot.svg      energy error, Casimir error and momentum against time
+//! lie-sim trade SCENE.toml                  work-precision table of every method, CSV and SVG
+//! lie-sim default-scene                     print the embedded default scene, a starting point
+//! ```
+//!
+//! The scene format is documented in [`scene`]; examples live in `examples/scenes/`.
+
+mod error;
+mod output;
+mod plot;
+mod run;
+mod scene;
+mod sim;
+mod trade;
+
+use clap::{Args, Parser, Subcommand};
+use error::SimError;
+use scene::{Overrides, Scene};
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Where outputs go when no path is given.
+const DEFAULT_OUT_DIR: &str = "target/lie-sim";
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "lie-sim",
+    version,
+    about = "Simulate mechanical systems on Lie groups with structure-preserving integrators.",
+    long_about = "Simulate mechanical systems on Lie groups (rigid bodies on SO(3), SE(3), SE(2), \
+                  geodesics on SO(n)) with the Lie–Poisson, Euler–Poincaré and Euler–Arnold \
+                  integrators, and compare them with RK4 and RKMK4.\n\nWith no command, runs the \
+                  embedded default scene: a rigid body tumbling near its unstable intermediate axis."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run a scene and write its trajectory as CSV (and optionally an SVG plot).
+    Run {
+        /// The scene file (TOML); the embedded default scene when left out.
+        scene: Option<PathBuf>,
+        /// Trajectory CSV [default: target/lie-sim/<scene>.csv].
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+        /// Also draw the trajectory plot to this SVG.
+        #[arg(long)]
+        plot: Option<PathBuf>,
+        #[command(flatten)]
+        overrides: OverrideArgs,
+    },
+    /// Plot a trajectory CSV written by `run`: energy error, Casimir error and momentum against t.
+    Plot {
+        /// The trajectory CSV.
+        csv: PathBuf,
+        /// The SVG to write [default: the CSV's path with extension .svg].
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+    },
+    /// Work-precision trade: every applicable method over a ladder of steps against a reference.
+    Trade {
+        /// The scene file (TOML); the embedded default scene when left out.
+        scene: Option<PathBuf>,
+        /// Table CSV [default: target/lie-sim/<scene>-trade.csv].
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+        /// Error-against-cost SVG [default: the table's path with extension .svg].
+        #[arg(long)]
+        plot: Option<PathBuf>,
+        /// Number of step sizes h, h/2, …, h/2^(levels−1), from the scene's step h.
+        #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(2..=12))]
+        levels: u32,
+        /// Repeat each run this many times and keep the fastest (timings on a busy machine).
+        #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=100))]
+        repeats: u32,
+        #[command(flatten)]
+        overrides: OverrideArgs,
+    },
+    /// Print the embedded default scene (a commented starting point for your own).
+    DefaultScene,
+}
+
+/// Overrides of the scene's values, checked like the scene's own.
+#[derive(Args, Debug, Clone, Copy)]
+struct OverrideArgs {
+    /// Replace the scene's duration T.
+    #[arg(long)]
+    duration: Option<f64>,
+    /// Replace the scene's step h.
+    #[arg(long)]
+    step: Option<f64>,
+    /// Replace the scene's output stride.
+    #[arg(long)]
+    stride: Option<u64>,
+}
+
+impl From<OverrideArgs> for Overrides {
+    fn from(a: OverrideArgs) -> Self {
+        Overrides {
+            duration: a.duration,
+            step: a.step,
+            stride: a.stride,
+        }
+    }
+}
+
+fn load(scene: Option<&Path>, overrides: OverrideArgs) -> Result<(Scene, String), SimError> {
+    match scene {
+        Some(p) => {
+            let stem = p
+                .file_stem()
+                .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
+            Ok((Scene::load(p, overrides.into())?, stem))
+        }
+        None => Ok((Scene::default_scene(overrides.into())?, "default".into())),
+    }
+}
+
+fn default_path(stem: &str, suffix: &str) -> PathBuf {
+    Path::new(DEFAULT_OUT_DIR).join(format!("{stem}{suffix}"))
+}
+
+fn human_duration(d: std::time::Duration) -> String {
+    let s = d.as_secs_f64();
+    if s >= 1.0 {
+        format!("{s:.2} s")
+    } else if s >= 1e-3 {
+        format!("{:.1} ms", s * 1e3)
+    } else {
+        format!("{:.0} µs", s * 1e6)
+    }
+}
+
+fn cmd_run(
+    scene_path: Option<&Path>,
+    out: Option<PathBuf>,
+    plot_path: Option<PathBuf>,
+    overrides: OverrideArgs,
+) -> Result<(), SimError> {
+    let (scene, stem) = load(scene_path, overrides)?;
+    let out = out.unwrap_or_else(|| default_path(&stem, ".csv"));
+    let progress = std::io::stdout().is_terminal();
+    let summary = run::run_scene(&scene, &out, progress)?;
+    let plotted = match plot_path {
+        Some(p) => {
+            let traj = plot::read_csv(&out)?;
+            plot::plot_trajectory(&traj, &p, &scene.name)?;
+            Some(p)
+        }
+        None => None,
+    };
+
+    let m = &scene.method;
+    println!("lie-sim: {} ({})", scene.name, scene.source);
+    println!("  system       {}", scene.system.kind());
+    println!("  method       {}", m.method);
+    println!("  tau          {}", m.tau_label());
+    println!("  theta        {}", m.theta_label());
+    println!(
+        "  steps        {} × h = {} to T = {}{}",
+        summary.steps,
+        scene.step,
+        scene.duration,
+        if scene.reconstruct {
+            ""
+        } else {
+            " (momentum only, no reconstruction)"
+        }
+    );
+    println!(
+        "  wall time    {} ({:.0} ns per step, output included)",
+        human_duration(summary.wall),
+        summary.wall.as_nanos() as f64 / summary.steps as f64
+    );
+    println!(
+        "  energy       max |E − E₀|/|E₀| = {:.3e}",
+        summary.max_energy_error
+    );
+    match summary.max_casimir_error {
+        Some(c) => println!("  casimir      max |C − C₀|/|C₀| = {c:.3e}"),
+        None => println!(
+            "  casimir      (none monitored for this {})",
+            scene.system.kind()
+        ),
+    }
+    println!(
+        "  trajectory   {} ({} rows)",
+        summary.out.display(),
+        summary.rows
+    );
+    if let Some(p) = plotted {
+        println!("  plot         {}", p.display());
+    }
+    Ok(())
+}
+
+fn cmd_plot(csv: &Path, out: Option<PathBuf>) -> Result<(), SimError> {
+    let out = out.unwrap_or_else(|| csv.with_extension("svg"));
+    let traj = plot::read_csv(csv)?;
+    let title = csv
+        .file_stem()
+        .map_or_else(|| "trajectory".into(), |s| s.to_string_lossy().into_owned());
+    plot::plot_trajectory(&traj, &out, &title)?;
+    println!(
+        "lie-sim: plotted {} ({} rows) to {}",
+        csv.display(),
+        traj.rows(),
+        out.display()
+    );
+    Ok(())
+}
+
+fn cmd_trade(
+    scene_path: Option<&Path>,
+    out: Option<PathBuf>,
+    plot_path: Option<PathBuf>,
+    levels: u32,
+    repeats: u32,
+    overrides: OverrideArgs,
+) -> Result<(), SimError> {
+    let (scene, stem) = load(scene_path, overrides)?;
+    let csv = out.unwrap_or_else(|| default_path(&stem, "-trade.csv"));
+    let svg = plot_path.unwrap_or_else(|| csv.with_extension("svg"));
+    println!(
+        "lie-sim trade: {} ({}), T = {}, h = {} … {}",
+        scene.name,
+        scene.system.kind(),
+        scene.duration,
+        scene.step,
+        scene.step / f64::powi(2.0, levels as i32 - 1)
+    );
+    println!("{}", trade::table_header());
+    let report = trade::trade(&scene, levels as usize, repeats as usize, |r| {
+        println!("{}", trade::table_line(r))
+    })?;
+    println!(
+        "reference: {} (estimated error {:.1e})",
+        report.reference.description, report.reference.estimated_error
+    );
+    println!(
+        "observed orders (slope of log error against log h, over errors between {:.0} × the \
+         reference's and {}):",
+        trade::ORDER_FIT_REFERENCE_MARGIN,
+        trade::ORDER_FIT_MAX_ERROR
+    );
+    for (m, rows) in trade::by_method(&report.rows) {
+        match trade::fitted_order(&rows, report.reference.estimated_error) {
+            Some(p) => println!("  {:<40} {p:.2}", m.to_string()),
+            None => println!("  {:<40} -", m.to_string()),
+        }
+    }
+    if !report.unavailable.is_empty() {
+        let names: Vec<String> = report.unavailable.iter().map(|m| m.to_string()).collect();
+        println!("not yet available: {}", names.join(", "));
+    }
+    if report.rows.is_empty() {
+        return Err(SimError::NotYetAvailable {
+            what: format!("every method for {}", scene.system.kind()),
+            why: "the integrators crate provides none of them yet".into(),
+        });
+    }
+    trade::write_outputs(&report, &scene, &csv, &svg)?;
+    println!("table: {}\nplot:  {}", csv.display(), svg.display());
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => cmd_run(
+            None,
+            None,
+            Some(default_path("default", ".svg")),
+            OverrideArgs {
+                duration: None,
+                step: None,
+                stride: None,
+            },
+        ),
+        Some(Command::Run {
+            scene,
+            out,
+            plot,
+            overrides,
+        }) => cmd_run(scene.as_deref(), out, plot, overrides),
+        Some(Command::Plot { csv, out }) => cmd_plot(&csv, out),
+        Some(Command::Trade {
+            scene,
+            out,
+            plot,
+            levels,
+            repeats,
+            overrides,
+        }) => cmd_trade(scene.as_deref(), out, plot, levels, repeats, overrides),
+        Some(Command::DefaultScene) => {
+            print!("{}", scene::DEFAULT_SCENE);
+            Ok(())
+        }
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("lie-sim: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

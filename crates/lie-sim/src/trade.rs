@@ -1,0 +1,532 @@
+//! `lie-sim trade`: the speed–accuracy trade of every method that applies to a scene.
+//!
+//! Every candidate method (each Lie integrator × τ ∈ {exp, cayley} × θ ∈ {0, ½, 1}, plus rk4 and
+//! rkmk4) runs the scene over a ladder of steps h₀, h₀/2, …, h₀/2^{L−1} (h₀ the scene's step). Each
+//! run is compared at the final time T with a reference solution: the most accurate method the
+//! integrators crate provides for the system, at a step 16 times smaller than the finest of the
+//! ladder (see [`reference`]). The table reports, per run, the cost (ns per step, total time),
+//! the error at T and the maximum relative energy error.
+//!
+//! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
+//! only where both runs reconstruct g. Timing covers only the steps: the energy is sampled every
+//! [`ENERGY_SAMPLE`] steps outside the timed intervals, so that the table measures the integrator,
+//! not the bookkeeping.
+
+use crate::error::SimError;
+use crate::output::write_atomic;
+use crate::plot::{plot_loglog, Curve};
+use crate::run::relative_error;
+use crate::scene::{steps_for, Method, MethodSpec, Scene, TauKind};
+use crate::sim::{build, Simulation};
+use std::fmt::Write as _;
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+/// Steps between two energy samples (and two clock reads) in a timed run.
+pub const ENERGY_SAMPLE: u64 = 8;
+
+/// An order-4 reference (rk4, rkmk4) runs at the finest step of the ladder divided by this: its
+/// error is then 4⁴ = 256 times below rk4's own at the finest step, while a finer step would only
+/// add round-off, which over long horizons near a separatrix is amplified to the same level.
+pub const REFERENCE_REFINEMENT_ORDER4: f64 = 4.0;
+
+/// The Richardson-extrapolated θ = ½ reference (used where no order-4 method exists) runs at the
+/// finest step divided by this.
+pub const REFERENCE_REFINEMENT_RICHARDSON: f64 = 16.0;
+
+/// Rows whose error is below this multiple of the reference's estimated error measure the
+/// reference, not the method: they are left out of the order fit.
+pub const ORDER_FIT_REFERENCE_MARGIN: f64 = 10.0;
+
+/// Rows whose error is above this are outside the asymptotic regime (a phase error of order one
+/// saturates): they are left out of the order fit.
+pub const ORDER_FIT_MAX_ERROR: f64 = 0.1;
+
+/// The θ values swept for each Lie method.
+pub const THETAS: [f64; 3] = [0.0, 0.5, 1.0];
+
+/// Every method the trade tries, in table order.
+pub fn candidates() -> Vec<MethodSpec> {
+    let mut v = Vec::new();
+    for method in [
+        Method::LiePoisson,
+        Method::EulerPoincare,
+        Method::EulerArnold,
+    ] {
+        for tau in [TauKind::Exp, TauKind::Cayley] {
+            for theta in THETAS {
+                v.push(MethodSpec {
+                    method,
+                    tau: Some(tau),
+                    theta: Some(theta),
+                });
+            }
+        }
+    }
+    v.push(MethodSpec {
+        method: Method::Rk4,
+        tau: None,
+        theta: None,
+    });
+    v.push(MethodSpec {
+        method: Method::Rkmk4,
+        tau: Some(TauKind::Exp),
+        theta: None,
+    });
+    v
+}
+
+/// The state compared at the final time.
+#[derive(Debug, Clone)]
+pub struct FinalState {
+    /// μ(T).
+    pub momentum: Vec<f64>,
+    /// g(T) row-major, if reconstructed.
+    pub group: Option<Vec<f64>>,
+}
+
+impl FinalState {
+    fn of(sim: &dyn Simulation) -> Self {
+        Self {
+            momentum: sim.momentum(),
+            group: sim.group_matrix(),
+        }
+    }
+
+    /// The error of `self` against `reference` (see the module page).
+    pub fn error(&self, reference: &FinalState) -> f64 {
+        let max_abs = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let diff = |a: &[f64], b: &[f64]| {
+            a.iter()
+                .zip(b)
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+        };
+        let mu_scale = max_abs(&reference.momentum);
+        let mut e =
+            diff(&self.momentum, &reference.momentum) / if mu_scale > 0.0 { mu_scale } else { 1.0 };
+        if let (Some(g), Some(gr)) = (&self.group, &reference.group) {
+            e = e.max(diff(g, gr) / max_abs(gr).max(1.0));
+        }
+        e
+    }
+}
+
+/// One timed run.
+#[derive(Debug, Clone)]
+pub struct Timed {
+    /// The state at T.
+    pub state: FinalState,
+    /// Steps taken.
+    pub steps: u64,
+    /// Time spent in `step` (the clock is read every [`ENERGY_SAMPLE`] steps).
+    pub stepping: Duration,
+    /// Maximum relative energy error over the samples.
+    pub max_energy_error: f64,
+}
+
+/// Runs `sim` to `duration` with step `h` (the last step shortened to land on T).
+pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Timed, SimError> {
+    let n = steps_for(duration, h);
+    let h_last = duration - (n - 1) as f64 * h;
+    let e0 = sim.energy();
+    let mut max_e = 0.0f64;
+    let mut stepping = Duration::ZERO;
+    let mut k = 0u64;
+    while k < n {
+        let chunk_end = (k + ENERGY_SAMPLE).min(n);
+        let start = Instant::now();
+        while k < chunk_end {
+            let hk = if k + 1 == n { h_last } else { h };
+            if let Err(message) = sim.step(hk) {
+                return Err(SimError::Step {
+                    step: k,
+                    time: sim.time(),
+                    message,
+                });
+            }
+            k += 1;
+        }
+        stepping += start.elapsed();
+        let e = sim.energy();
+        if !e.is_finite() {
+            return Err(SimError::NonFinite {
+                step: k - 1,
+                time: sim.time(),
+            });
+        }
+        max_e = max_e.max(relative_error(e, e0));
+    }
+    Ok(Timed {
+        state: FinalState::of(sim),
+        steps: n,
+        stepping,
+        max_energy_error: max_e,
+    })
+}
+
+/// The reference solution at T and how it was made.
+#[derive(Debug, Clone)]
+pub struct Reference {
+    /// The state at T.
+    pub state: FinalState,
+    /// E.g. `rk4 at h = 6.25e-4`.
+    pub description: String,
+    /// The difference between the reference and the same method at twice its step: an upper
+    /// estimate of the reference's own error.
+    pub estimated_error: f64,
+}
+
+/// The reference at T: the first available of rk4 and rkmk4 (τ = exp) at
+/// `h_min` / [`REFERENCE_REFINEMENT_ORDER4`], else the θ = ½ Lie–Poisson method with τ = cayley
+/// extrapolated by Richardson at `h_min` / [`REFERENCE_REFINEMENT_RICHARDSON`] (its error expansion
+/// is in even powers of h because the method is symmetric, so (4 x_{h/2} − x_h)/3 is of order 4).
+pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
+    let h_ref = h_min / REFERENCE_REFINEMENT_ORDER4;
+    let order4 = [
+        MethodSpec {
+            method: Method::Rk4,
+            tau: None,
+            theta: None,
+        },
+        MethodSpec {
+            method: Method::Rkmk4,
+            tau: Some(TauKind::Exp),
+            theta: None,
+        },
+    ];
+    let run = |m: &MethodSpec, h: f64| -> Result<FinalState, SimError> {
+        let mut sim = build(&scene.system, m, scene.reconstruct, &scene.solver)?;
+        Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
+    };
+    for m in &order4 {
+        match run(m, h_ref) {
+            Ok(fine) => {
+                let coarse = run(m, 2.0 * h_ref)?;
+                return Ok(Reference {
+                    estimated_error: coarse.error(&fine),
+                    state: fine,
+                    description: format!("{m} at h = {h_ref:.3e}"),
+                });
+            }
+            Err(SimError::NotYetAvailable { .. }) => continue,
+            Err(e) => return Err(e),
+        }
+    }
+    let sym = MethodSpec {
+        method: Method::LiePoisson,
+        tau: Some(TauKind::Cayley),
+        theta: Some(0.5),
+    };
+    let richardson = |h: f64| -> Result<FinalState, SimError> {
+        let coarse = run(&sym, h)?;
+        let fine = run(&sym, h / 2.0)?;
+        let ex = |a: &[f64], b: &[f64]| -> Vec<f64> {
+            b.iter().zip(a).map(|(f, c)| (4.0 * f - c) / 3.0).collect()
+        };
+        Ok(FinalState {
+            momentum: ex(&coarse.momentum, &fine.momentum),
+            group: match (&coarse.group, &fine.group) {
+                (Some(c), Some(f)) => Some(ex(c, f)),
+                _ => None,
+            },
+        })
+    };
+    let h_ref = h_min / REFERENCE_REFINEMENT_RICHARDSON;
+    let fine = richardson(h_ref)?;
+    let coarse = richardson(2.0 * h_ref)?;
+    Ok(Reference {
+        estimated_error: coarse.error(&fine),
+        state: fine,
+        description: format!("{sym} with Richardson extrapolation from h = {h_ref:.3e}"),
+    })
+}
+
+/// One line of the work-precision table.
+#[derive(Debug, Clone)]
+pub struct TradeRow {
+    /// The method.
+    pub method: MethodSpec,
+    /// Step h.
+    pub h: f64,
+    /// Steps taken (0 when the run failed before the first).
+    pub steps: u64,
+    /// Mean time per step, ns.
+    pub ns_per_step: f64,
+    /// Total stepping time, s.
+    pub seconds: f64,
+    /// Error at T against the reference (NaN when the run failed).
+    pub error: f64,
+    /// Maximum relative energy error (NaN when the run failed).
+    pub max_energy_error: f64,
+    /// Why the run failed, if it did.
+    pub failure: Option<String>,
+}
+
+/// The outcome of a trade: the rows, the reference, and the methods that were not available.
+#[derive(Debug, Clone)]
+pub struct TradeReport {
+    /// Rows in table order.
+    pub rows: Vec<TradeRow>,
+    /// The reference solution.
+    pub reference: Reference,
+    /// Methods the integrators crate does not provide for this system.
+    pub unavailable: Vec<MethodSpec>,
+}
+
+/// Runs the trade over `levels` step sizes; each run is repeated `repeats` times from the same
+/// initial state and the fastest stepping time kept (the minimum is the least disturbed by other
+/// load on the machine; the numbers themselves are identical between repeats). `on_row` sees each
+/// row as soon as it is measured.
+pub fn trade(
+    scene: &Scene,
+    levels: usize,
+    repeats: usize,
+    mut on_row: impl FnMut(&TradeRow),
+) -> Result<TradeReport, SimError> {
+    let ladder: Vec<f64> = (0..levels)
+        .map(|k| scene.step / f64::powi(2.0, k as i32))
+        .collect();
+    let h_min = ladder.last().copied().unwrap_or(scene.step);
+    let reference = reference(scene, h_min)?;
+    let mut rows = Vec::new();
+    let mut unavailable = Vec::new();
+    for m in candidates() {
+        for &h in &ladder {
+            let mut best: Option<Result<Timed, SimError>> = None;
+            for _ in 0..repeats.max(1) {
+                let mut sim = match build(&scene.system, &m, scene.reconstruct, &scene.solver) {
+                    Ok(s) => s,
+                    Err(SimError::NotYetAvailable { .. }) => break,
+                    Err(e) => return Err(e),
+                };
+                let t = timed_run(sim.as_mut(), scene.duration, h);
+                best = Some(match (best, t) {
+                    (Some(Ok(b)), Ok(t)) if b.stepping <= t.stepping => Ok(b),
+                    (_, t) => t,
+                });
+                if matches!(best, Some(Err(_))) {
+                    break;
+                }
+            }
+            let Some(result) = best else {
+                unavailable.push(m);
+                break;
+            };
+            let row = match result {
+                Ok(t) => TradeRow {
+                    method: m,
+                    h,
+                    steps: t.steps,
+                    ns_per_step: t.stepping.as_nanos() as f64 / t.steps as f64,
+                    seconds: t.stepping.as_secs_f64(),
+                    error: t.state.error(&reference.state),
+                    max_energy_error: t.max_energy_error,
+                    failure: None,
+                },
+                Err(e) => TradeRow {
+                    method: m,
+                    h,
+                    steps: 0,
+                    ns_per_step: f64::NAN,
+                    seconds: f64::NAN,
+                    error: f64::NAN,
+                    max_energy_error: f64::NAN,
+                    failure: Some(e.to_string()),
+                },
+            };
+            on_row(&row);
+            rows.push(row);
+        }
+    }
+    Ok(TradeReport {
+        rows,
+        reference,
+        unavailable,
+    })
+}
+
+/// The least-squares slope of log(error) against log(h) over a method's successful rows in the
+/// asymptotic regime: the observed order of convergence. Rows with an error below
+/// [`ORDER_FIT_REFERENCE_MARGIN`] × `reference_error` or above [`ORDER_FIT_MAX_ERROR`] are left out
+/// (see those constants); `None` with fewer than two usable points.
+pub fn fitted_order(rows: &[&TradeRow], reference_error: f64) -> Option<f64> {
+    let floor = ORDER_FIT_REFERENCE_MARGIN * reference_error;
+    let pts: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.failure.is_none() && r.error.is_finite())
+        .filter(|r| r.error > floor && r.error > 0.0 && r.error <= ORDER_FIT_MAX_ERROR)
+        .map(|r| (r.h.ln(), r.error.ln()))
+        .collect();
+    if pts.len() < 2 {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let (sx, sy) = pts.iter().fold((0.0, 0.0), |(a, b), p| (a + p.0, b + p.1));
+    let (mx, my) = (sx / n, sy / n);
+    let (sxy, sxx) = pts.iter().fold((0.0, 0.0), |(a, b), p| {
+        (a + (p.0 - mx) * (p.1 - my), b + (p.0 - mx) * (p.0 - mx))
+    });
+    (sxx > 0.0).then(|| sxy / sxx)
+}
+
+/// Table header, fixed width.
+pub fn table_header() -> String {
+    format!(
+        "{:<15} {:>6} {:>5} {:>10} {:>10} {:>11} {:>11} {:>11}",
+        "method", "tau", "theta", "h", "steps", "ns/step", "error(T)", "max|dE/E|"
+    )
+}
+
+/// One table line.
+pub fn table_line(r: &TradeRow) -> String {
+    let head = format!(
+        "{:<15} {:>6} {:>5} {:>10.3e}",
+        r.method.method.name(),
+        r.method.tau_label(),
+        r.method.theta_label(),
+        r.h
+    );
+    match &r.failure {
+        Some(f) => format!("{head} failed: {f}"),
+        None => format!(
+            "{head} {:>10} {:>11.1} {:>11.3e} {:>11.3e}",
+            r.steps, r.ns_per_step, r.error, r.max_energy_error
+        ),
+    }
+}
+
+/// The rows as CSV.
+pub fn to_csv(rows: &[TradeRow]) -> String {
+    let mut s = String::from(
+        "method,tau,theta,h,steps,ns_per_step,seconds,error,max_energy_error,failure\n",
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{},{},{},{},{}",
+            r.method.method.name(),
+            r.method.tau_label(),
+            r.method.theta_label(),
+            r.h,
+            r.steps,
+            r.ns_per_step,
+            r.seconds,
+            r.error,
+            r.max_energy_error,
+            r.failure.as_deref().unwrap_or("").replace(',', ";")
+        );
+    }
+    s
+}
+
+/// Groups rows by method, in first-seen order.
+pub fn by_method(rows: &[TradeRow]) -> Vec<(MethodSpec, Vec<&TradeRow>)> {
+    let mut groups: Vec<(MethodSpec, Vec<&TradeRow>)> = Vec::new();
+    for r in rows {
+        match groups.iter_mut().find(|(m, _)| *m == r.method) {
+            Some((_, v)) => v.push(r),
+            None => groups.push((r.method, vec![r])),
+        }
+    }
+    groups
+}
+
+/// Writes the table as CSV to `csv` and the error-against-cost plot to `svg`.
+pub fn write_outputs(
+    report: &TradeReport,
+    scene: &Scene,
+    csv: &Path,
+    svg: &Path,
+) -> Result<(), SimError> {
+    write_atomic(csv, &to_csv(&report.rows))?;
+    let curves: Vec<Curve> = by_method(&report.rows)
+        .into_iter()
+        .map(|(m, rows)| Curve {
+            label: format!(
+                "{} {}{}",
+                m.method.name(),
+                m.tau.map_or(String::new(), |t| t.name().to_string()),
+                m.theta.map_or(String::new(), |t| format!(" θ={t}"))
+            ),
+            points: rows
+                .iter()
+                .filter(|r| r.failure.is_none())
+                .map(|r| (r.seconds, r.error))
+                .collect(),
+        })
+        .collect();
+    plot_loglog(
+        &curves,
+        svg,
+        &format!(
+            "{} ({}), T = {}: error at T against cost",
+            scene.name,
+            scene.system.kind(),
+            scene.duration
+        ),
+        "cost: stepping time (s)",
+        "error at T",
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(h: f64, error: f64) -> TradeRow {
+        TradeRow {
+            method: candidates()[0],
+            h,
+            steps: 1,
+            ns_per_step: 1.0,
+            seconds: 1.0,
+            error,
+            max_energy_error: 0.0,
+            failure: None,
+        }
+    }
+
+    #[test]
+    fn fitted_order_recovers_the_exponent_of_a_power_law() {
+        let rows: Vec<TradeRow> = [0.1, 0.05, 0.025, 0.0125]
+            .iter()
+            .map(|&h| row(h, 3.0 * h * h))
+            .collect();
+        let refs: Vec<&TradeRow> = rows.iter().collect();
+        assert!((fitted_order(&refs, 0.0).unwrap() - 2.0).abs() < 1e-12);
+        assert_eq!(fitted_order(&refs[..1], 0.0), None);
+    }
+
+    #[test]
+    fn fitted_order_ignores_points_at_the_reference_floor_or_saturated() {
+        // Errors 3h² down to 4.7e-4, then two rows at a 1e-9 floor and one saturated at 0.5.
+        let mut rows: Vec<TradeRow> = [0.1, 0.05, 0.025, 0.0125]
+            .iter()
+            .map(|&h| row(h, 3.0 * h * h))
+            .collect();
+        rows.push(row(0.00625, 1e-9));
+        rows.push(row(0.003125, 1e-9));
+        rows.push(row(0.2, 0.5));
+        let refs: Vec<&TradeRow> = rows.iter().collect();
+        assert!((fitted_order(&refs, 1e-9).unwrap() - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn candidates_cover_every_lie_method_tau_theta_and_the_baselines() {
+        // 3 methods × 2 τ × 3 θ + rk4 + rkmk4.
+        assert_eq!(candidates().len(), 20);
+    }
+
+    #[test]
+    fn error_is_relative_in_momentum_and_absolute_below_one_in_the_group() {
+        let r = FinalState {
+            momentum: vec![2.0, 0.0],
+            group: Some(vec![0.5]),
+        };
+        let x = FinalState {
+            momentum: vec![2.0, 0.2],
+            group: Some(vec![0.5 + 0.3]),
+        };
+        assert!((x.error(&r) - 0.3).abs() < 1e-15);
+    }
+}

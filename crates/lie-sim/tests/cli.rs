@@ -1,0 +1,663 @@
+//! End-to-end tests of the `lie-sim` binary: every example scene runs and writes the documented
+//! CSV with its invariants intact, `plot` and `trade` write their files, and every kind of bad input
+//! is a one-line error naming the field, with a non-zero exit status and no output file left.
+//!
+//! Runs are kept short (`--duration`) so that the suite is fast in debug builds.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const BIN: &str = env!("CARGO_BIN_EXE_lie-sim");
+
+fn scenes_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes")
+}
+
+/// A fresh empty directory for one test.
+fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("lie-sim-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn lie_sim(args: &[&str], cwd: &Path) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .expect("the lie-sim binary runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+struct Csv {
+    header: Vec<String>,
+    rows: Vec<Vec<f64>>,
+}
+
+impl Csv {
+    fn read(path: &Path) -> Csv {
+        let text = std::fs::read_to_string(path).unwrap();
+        let mut lines = text.lines();
+        let header = lines
+            .next()
+            .unwrap()
+            .split(',')
+            .map(String::from)
+            .collect::<Vec<_>>();
+        let rows = lines
+            .map(|l| l.split(',').map(|x| x.parse::<f64>().unwrap()).collect())
+            .collect();
+        Csv { header, rows }
+    }
+    fn col(&self, name: &str) -> Vec<f64> {
+        let j = self.header.iter().position(|h| h == name).unwrap();
+        self.rows.iter().map(|r| r[j]).collect()
+    }
+    /// max_k |x_k − x₀| / |x₀| over a column.
+    fn max_relative_drift(&self, name: &str) -> f64 {
+        let c = self.col(name);
+        c.iter()
+            .map(|x| (x - c[0]).abs() / c[0].abs())
+            .fold(0.0, f64::max)
+    }
+    /// max_k ‖g_kᵀ g_k − I‖_max over the rotation block (the top-left `r`×`r`) of g.
+    fn max_orthogonality_defect(&self, side: usize, r: usize) -> f64 {
+        let j0 = self.header.iter().position(|h| h == "g11").unwrap();
+        let mut worst = 0.0f64;
+        for row in &self.rows {
+            let g = |i: usize, j: usize| row[j0 + i * side + j];
+            for a in 0..r {
+                for b in 0..r {
+                    let dot: f64 = (0..r).map(|k| g(k, a) * g(k, b)).sum();
+                    let id = if a == b { 1.0 } else { 0.0 };
+                    worst = worst.max((dot - id).abs());
+                }
+            }
+        }
+        worst
+    }
+}
+
+fn expected_header(n_mu: usize, side: Option<usize>, casimir: bool) -> Vec<String> {
+    let mut h = vec!["t".to_string()];
+    h.extend((1..=n_mu).map(|i| format!("mu{i}")));
+    if let Some(m) = side {
+        for i in 1..=m {
+            for j in 1..=m {
+                h.push(format!("g{i}{j}"));
+            }
+        }
+    }
+    h.push("energy".into());
+    if casimir {
+        h.push("casimir".into());
+    }
+    h
+}
+
+/// Rows written for `steps` steps at `stride`: t = 0, every stride-th step, and the last step.
+fn expected_rows(steps: usize, stride: usize) -> usize {
+    // ⌈steps/stride⌉ rows after the first, the last one at T.
+    1 + steps.div_ceil(stride)
+}
+
+/// Relative energy error accepted over T = 1 in the example-scene checks (see [`check_scene`]).
+const ENERGY_TOL: f64 = 1e-5;
+
+/// Runs an example scene for T = 1 and checks the CSV: header, row count, t(T) = 1, the Casimir
+/// (where the system has one) to round-off and the energy to the method's accuracy, and g on its
+/// group.
+///
+/// Tolerances: the Lie–Poisson and Euler–Poincaré integrators keep μ on its coadjoint orbit, so the
+/// Casimir drifts only by round-off (10⁻¹² over ≤ 1000 steps leaves ~10³ ulps of slack); the energy
+/// error of these second-order methods at the scenes' steps over T = 1 was measured ≤ 3·10⁻⁷ and is
+/// checked at [`ENERGY_TOL`]; R stays orthogonal to round-off because every update multiplies by
+/// τ(ξ) ∈ SO(n) (10⁻¹³ ≈ 500 ulps).
+fn check_scene(
+    file: &str,
+    n_mu: usize,
+    side: usize,
+    rot: usize,
+    step: f64,
+    stride: usize,
+    casimir: bool,
+) {
+    let energy_tol = ENERGY_TOL;
+    let dir = temp_dir(file);
+    let out = dir.join("traj.csv");
+    let scene = scenes_dir().join(file);
+    let o = lie_sim(
+        &[
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--duration",
+            "1",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{file}: {}", stderr(&o));
+    let csv = Csv::read(&out);
+    assert_eq!(
+        csv.header,
+        expected_header(n_mu, Some(side), casimir),
+        "{file}"
+    );
+    let steps = (1.0 / step).round() as usize;
+    assert_eq!(csv.rows.len(), expected_rows(steps, stride), "{file}");
+    let t = csv.col("t");
+    assert!(
+        (t[t.len() - 1] - 1.0).abs() < 1e-12,
+        "{file}: t(T) = {}",
+        t[t.len() - 1]
+    );
+    if casimir {
+        assert!(
+            csv.max_relative_drift("casimir") < 1e-12,
+            "{file}: Casimir drift {}",
+            csv.max_relative_drift("casimir")
+        );
+    }
+    assert!(
+        csv.max_relative_drift("energy") < energy_tol,
+        "{file}: energy drift {}",
+        csv.max_relative_drift("energy")
+    );
+    assert!(
+        csv.max_orthogonality_defect(side, rot) < 1e-13,
+        "{file}: ‖RᵀR − I‖ = {}",
+        csv.max_orthogonality_defect(side, rot)
+    );
+    let summary = stdout(&o);
+    for key in [
+        "system",
+        "method",
+        "tau",
+        "theta",
+        "wall time",
+        "energy",
+        "casimir",
+    ] {
+        assert!(
+            summary.contains(key),
+            "{file}: summary lacks {key}: {summary}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn free_rigid_body_scene_writes_documented_csv_with_invariants() {
+    check_scene("free-rigid-body.toml", 3, 3, 3, 0.05, 2, true);
+}
+
+#[test]
+fn default_scene_file_writes_documented_csv_with_invariants() {
+    check_scene("default.toml", 3, 3, 3, 0.01, 10, true);
+}
+
+#[test]
+fn rigid_body_se3_scene_writes_documented_csv_with_invariants() {
+    check_scene("rigid-body-se3.toml", 6, 4, 3, 0.02, 5, true);
+}
+
+#[test]
+fn planar_body_se2_scene_writes_documented_csv_with_invariants() {
+    check_scene("planar-body-se2.toml", 3, 3, 2, 0.01, 5, true);
+}
+
+#[test]
+fn geodesic_so_n_scene_writes_documented_csv_with_invariants() {
+    check_scene("geodesic-so-n.toml", 6, 4, 4, 0.02, 5, true);
+}
+
+/// The heavy top has a potential, so no Casimir column; its energy h(Π) + m g χ·Γ is conserved to
+/// O(h²) (h = 10⁻³ here).
+#[test]
+fn heavy_top_scene_writes_documented_csv_with_invariants() {
+    check_scene("heavy-top.toml", 3, 3, 3, 0.001, 10, false);
+}
+
+#[test]
+fn reconstruct_false_leaves_out_the_group_columns() {
+    let dir = temp_dir("noreconstruct");
+    let scene = dir.join("s.toml");
+    let text = std::fs::read_to_string(scenes_dir().join("free-rigid-body.toml"))
+        .unwrap()
+        .replace("reconstruct = true", "reconstruct = false");
+    std::fs::write(&scene, text).unwrap();
+    let o = lie_sim(
+        &["run", "s.toml", "--out", "t.csv", "--duration", "0.5"],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        Csv::read(&dir.join("t.csv")).header,
+        expected_header(3, None, true)
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `lie-sim` with no arguments runs the embedded default scene, writes the CSV and the plot under
+/// target/lie-sim/ of the working directory, and says so.
+#[test]
+fn no_arguments_runs_the_default_scene_and_reports_its_outputs() {
+    let dir = temp_dir("noargs");
+    let o = lie_sim(&[], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let s = stdout(&o);
+    assert!(s.contains("free-rigid-body"), "{s}");
+    assert!(s.contains("target/lie-sim/default.csv"), "{s}");
+    assert!(s.contains("target/lie-sim/default.svg"), "{s}");
+    let csv = Csv::read(&dir.join("target/lie-sim/default.csv"));
+    // T = 100, h = 0.01, stride 10.
+    assert_eq!(csv.rows.len(), expected_rows(10_000, 10));
+    assert!(csv.max_relative_drift("casimir") < 1e-12);
+    let svg = std::fs::read_to_string(dir.join("target/lie-sim/default.svg")).unwrap();
+    assert!(svg.starts_with("<svg"), "not an SVG");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn plot_writes_an_svg_of_a_run() {
+    let dir = temp_dir("plot");
+    let scene = scenes_dir().join("planar-body-se2.toml");
+    let o = lie_sim(
+        &[
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            "t.csv",
+            "--duration",
+            "0.5",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = lie_sim(&["plot", "t.csv", "--out", "p.svg"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(dir.join("p.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("Casimir") && svg.contains("mu3"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn plot_of_a_file_that_is_not_a_trajectory_fails_naming_the_line() {
+    let dir = temp_dir("badplot");
+    std::fs::write(dir.join("bad.csv"), "t,energy\n0,1\n0.1,oops\n").unwrap();
+    let o = lie_sim(&["plot", "bad.csv", "--out", "p.svg"], &dir);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("bad.csv:3"), "{}", stderr(&o));
+    assert!(!dir.join("p.svg").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The trade on a tiny horizon: one row per (available method, step), a CSV with the documented
+/// columns and an SVG.
+#[test]
+fn trade_writes_a_work_precision_table_and_plot() {
+    let dir = temp_dir("trade");
+    let o = lie_sim(
+        &[
+            "trade",
+            "--out",
+            "w.csv",
+            "--levels",
+            "2",
+            "--repeats",
+            "1",
+            "--step",
+            "0.05",
+            "--duration",
+            "0.2",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(dir.join("w.csv")).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "method,tau,theta,h,steps,ns_per_step,seconds,error,max_energy_error,failure"
+    );
+    // (lie-poisson and euler-poincare × 2 τ × 3 θ, rk4, rkmk4) × 2 steps.
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 28, "{text}");
+    for r in &rows {
+        let f: Vec<&str> = r.split(',').collect();
+        let err: f64 = f[7].parse().unwrap();
+        // Second-order or first-order methods at h ≤ 0.05 over T = 0.2 on a body with |Ω| ≈ 1:
+        // errors well below 10⁻², against a reference far more accurate than that.
+        assert!(err.is_finite() && err < 1e-2, "{r}");
+    }
+    assert!(std::fs::read_to_string(dir.join("w.svg"))
+        .unwrap()
+        .starts_with("<svg"));
+    assert!(stdout(&o).contains("reference: rk4"), "{}", stdout(&o));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input
+// ---------------------------------------------------------------------------------------------
+
+const GOOD: &str = r#"
+[system]
+kind = "free-rigid-body"
+inertia = [1.0, 2.0, 3.0]
+
+[initial]
+momentum = [0.1, 1.0, 0.1]
+
+[integrator]
+method = "lie-poisson"
+tau = "cayley"
+theta = 0.5
+step = 0.1
+duration = 0.3
+"#;
+
+/// Writes `scene` to a fresh directory, runs `lie-sim run` on it with an output path there, and
+/// checks: exit status 1, one line on stderr containing every one of `needles`, and no file left
+/// besides the scene.
+fn assert_rejected(name: &str, scene: &str, needles: &[&str]) {
+    let dir = temp_dir(name);
+    std::fs::write(dir.join("s.toml"), scene).unwrap();
+    let o = lie_sim(&["run", "s.toml", "--out", "out/t.csv"], &dir);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{name}: {err}");
+    assert_eq!(err.lines().count(), 1, "{name}: not one line: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{name}: `{n}` missing from: {err}");
+    }
+    let left: Vec<_> = walk(&dir);
+    assert_eq!(left, vec![dir.join("s.toml")], "{name}: files left behind");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut v = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            v.extend(walk(&p));
+        } else {
+            v.push(p);
+        }
+    }
+    v
+}
+
+#[test]
+fn good_scene_used_by_the_rejection_tests_runs() {
+    let dir = temp_dir("good");
+    std::fs::write(dir.join("s.toml"), GOOD).unwrap();
+    let o = lie_sim(&["run", "s.toml", "--out", "t.csv"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn missing_scene_file_is_an_error_naming_the_file() {
+    let dir = temp_dir("missing");
+    let o = lie_sim(&["run", "nope.toml", "--out", "t.csv"], &dir);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("cannot read nope.toml"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("t.csv").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn malformed_toml_is_an_error_naming_the_line() {
+    let bad = GOOD.replace("step = 0.1", "step = = 0.1");
+    assert_rejected("malformed", &bad, &["s.toml:13", "malformed TOML"]);
+}
+
+#[test]
+fn unknown_key_is_an_error_naming_it() {
+    let bad = GOOD.replace("inertia =", "inertial =");
+    assert_rejected("unknown-key", &bad, &["system.inertial", "unknown field"]);
+}
+
+#[test]
+fn unknown_system_is_an_error_naming_the_field() {
+    let bad = GOOD.replace("free-rigid-body", "bouncing-ball");
+    assert_rejected("unknown-system", &bad, &["system.kind", "bouncing-ball"]);
+}
+
+#[test]
+fn unknown_method_is_an_error_naming_the_field() {
+    let bad = GOOD.replace("\"lie-poisson\"", "\"leapfrog\"");
+    assert_rejected("unknown-method", &bad, &["integrator.method", "leapfrog"]);
+}
+
+#[test]
+fn unknown_tau_is_an_error_naming_the_field() {
+    let bad = GOOD.replace("\"cayley\"", "\"pade\"");
+    assert_rejected("unknown-tau", &bad, &["integrator.tau", "pade"]);
+}
+
+#[test]
+fn non_positive_inertia_is_an_error_naming_the_field() {
+    let bad = GOOD.replace("[1.0, 2.0, 3.0]", "[1.0, -2.0, 3.0]");
+    assert_rejected(
+        "negative-inertia",
+        &bad,
+        &["system.inertia", "positive", "-2"],
+    );
+    let bad = GOOD.replace("[1.0, 2.0, 3.0]", "[1.0, 0.0, 3.0]");
+    assert_rejected("zero-inertia", &bad, &["system.inertia", "positive"]);
+}
+
+#[test]
+fn non_finite_inertia_is_an_error_naming_the_field() {
+    let bad = GOOD.replace("[1.0, 2.0, 3.0]", "[1.0, nan, 3.0]");
+    assert_rejected("nan-inertia", &bad, &["system.inertia", "finite"]);
+    let bad = GOOD.replace("[1.0, 2.0, 3.0]", "[1.0, inf, 3.0]");
+    assert_rejected("inf-inertia", &bad, &["system.inertia", "finite"]);
+}
+
+#[test]
+fn non_symmetric_inertia_matrix_is_an_error_naming_the_field() {
+    let bad = GOOD.replace(
+        "[1.0, 2.0, 3.0]",
+        "[[1.0, 0.5, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 3.0]]",
+    );
+    assert_rejected("asym-inertia", &bad, &["system.inertia", "symmetric"]);
+}
+
+#[test]
+fn non_orthogonal_attitude_is_an_error_naming_the_field() {
+    let bad = GOOD.replace(
+        "momentum = [0.1, 1.0, 0.1]",
+        "momentum = [0.1, 1.0, 0.1]\nattitude = { matrix = [[1.0, 0.1, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] }",
+    );
+    assert_rejected(
+        "skew-attitude",
+        &bad,
+        &["initial.attitude.matrix", "orthogonal"],
+    );
+    let bad = GOOD.replace(
+        "momentum = [0.1, 1.0, 0.1]",
+        "momentum = [0.1, 1.0, 0.1]\nattitude = { matrix = [[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] }",
+    );
+    assert_rejected(
+        "reflection-attitude",
+        &bad,
+        &["initial.attitude.matrix", "determinant"],
+    );
+    let bad = GOOD.replace(
+        "momentum = [0.1, 1.0, 0.1]",
+        "momentum = [0.1, 1.0, 0.1]\nattitude = { quaternion = [1.0, 0.5, 0.0, 0.0] }",
+    );
+    assert_rejected(
+        "quaternion-norm",
+        &bad,
+        &["initial.attitude.quaternion", "unit norm"],
+    );
+}
+
+#[test]
+fn zero_or_negative_step_is_an_error_naming_the_field() {
+    assert_rejected(
+        "zero-step",
+        &GOOD.replace("step = 0.1", "step = 0.0"),
+        &["integrator.step", "positive"],
+    );
+    assert_rejected(
+        "negative-step",
+        &GOOD.replace("step = 0.1", "step = -0.1"),
+        &["integrator.step", "positive", "-0.1"],
+    );
+}
+
+#[test]
+fn duration_that_is_not_a_number_is_an_error_naming_the_field() {
+    assert_rejected(
+        "string-duration",
+        &GOOD.replace("duration = 0.3", "duration = \"ten seconds\""),
+        &["integrator.duration", "ten seconds"],
+    );
+    assert_rejected(
+        "nan-duration",
+        &GOOD.replace("duration = 0.3", "duration = nan"),
+        &["integrator.duration", "finite"],
+    );
+}
+
+#[test]
+fn theta_outside_unit_interval_is_an_error_naming_the_field() {
+    assert_rejected(
+        "theta",
+        &GOOD.replace("theta = 0.5", "theta = 1.5"),
+        &["integrator.theta", "[0, 1]"],
+    );
+}
+
+#[test]
+fn missing_field_is_an_error_naming_it() {
+    assert_rejected(
+        "missing-step",
+        &GOOD.replace("step = 0.1\n", ""),
+        &["integrator", "missing field `step`"],
+    );
+}
+
+#[test]
+fn wrong_momentum_length_is_an_error_naming_the_field() {
+    assert_rejected(
+        "momentum-len",
+        &GOOD.replace("[0.1, 1.0, 0.1]", "[0.1, 1.0]"),
+        &["initial.momentum", "3 components"],
+    );
+}
+
+#[test]
+fn parameter_of_another_system_is_an_error_naming_it() {
+    assert_rejected(
+        "misplaced",
+        &GOOD.replace(
+            "inertia = [1.0, 2.0, 3.0]",
+            "inertia = [1.0, 2.0, 3.0]\nmass = 2.0",
+        ),
+        &["system.mass", "not a parameter of free-rigid-body"],
+    );
+}
+
+#[test]
+fn command_line_override_that_is_not_a_number_is_a_usage_error() {
+    let dir = temp_dir("cli-duration");
+    let o = lie_sim(&["run", "--duration", "abc", "--out", "t.csv"], &dir);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--duration"), "{}", stderr(&o));
+    assert!(!dir.join("t.csv").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn command_line_override_is_checked_like_the_scene() {
+    let dir = temp_dir("cli-step");
+    let o = lie_sim(&["run", "--step=-1", "--out", "t.csv"], &dir);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("integrator.step"), "{}", stderr(&o));
+    assert!(!dir.join("t.csv").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn rkmk4_with_cayley_is_an_error_naming_the_field() {
+    let bad = GOOD
+        .replace("\"lie-poisson\"", "\"rkmk4\"")
+        .replace("theta = 0.5\n", "");
+    assert_rejected("rkmk4-cayley", &bad, &["integrator.tau", "rkmk4", "exp"]);
+}
+
+#[test]
+fn rk4_with_a_tau_is_an_error_naming_the_field() {
+    let bad = GOOD
+        .replace("\"lie-poisson\"", "\"rk4\"")
+        .replace("theta = 0.5\n", "");
+    assert_rejected("rk4-tau", &bad, &["integrator.tau", "rk4"]);
+}
+
+#[test]
+fn heavy_top_without_reconstruction_is_an_error_naming_the_field() {
+    let text = std::fs::read_to_string(scenes_dir().join("heavy-top.toml"))
+        .unwrap()
+        .replace("[integrator]", "[integrator]\nreconstruct = false");
+    assert_rejected(
+        "top-noreconstruct",
+        &text,
+        &["integrator.reconstruct", "potential"],
+    );
+}
+
+#[test]
+fn euler_arnold_method_is_reported_as_not_available() {
+    let bad = GOOD.replace("\"lie-poisson\"", "\"euler-arnold\"");
+    assert_rejected("euler-arnold", &bad, &["not yet available", "euler-arnold"]);
+}
+
+#[test]
+fn rk4_on_a_group_other_than_so3_is_reported_as_not_available() {
+    let text = std::fs::read_to_string(scenes_dir().join("planar-body-se2.toml"))
+        .unwrap()
+        .replace("\"euler-poincare\"", "\"rk4\"")
+        .replace("tau = \"cayley\"\n", "")
+        .replace("theta = 0.5\n", "");
+    assert_rejected("rk4-se2", &text, &["not yet available", "rk4", "rkmk4"]);
+}
+
+#[test]
+fn so_n_of_a_size_not_compiled_in_is_reported_as_not_available() {
+    let text = std::fs::read_to_string(scenes_dir().join("geodesic-so-n.toml"))
+        .unwrap()
+        .replace("n = 4", "n = 7")
+        .replace("[1.0, 1.5, 2.0, 3.0]", "[1, 2, 3, 4, 5, 6, 7]")
+        .replace(
+            "[1.0, 0.2, -0.3, 0.5, 0.1, 0.4]",
+            "[1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]",
+        );
+    assert_rejected("so7", &text, &["not yet available", "SO(7)"]);
+}
+
+#[test]
+fn so_n_momentum_of_the_wrong_length_is_an_error_naming_the_field() {
+    let text = std::fs::read_to_string(scenes_dir().join("geodesic-so-n.toml"))
+        .unwrap()
+        .replace("[1.0, 0.2, -0.3, 0.5, 0.1, 0.4]", "[1.0, 0.2, -0.3]");
+    assert_rejected("so4-momentum", &text, &["initial.momentum", "6 components"]);
+}
