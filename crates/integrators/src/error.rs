@@ -1,0 +1,52 @@
+//! The one error type of the crate.
+
+use lie_groups::LieError;
+use thiserror::Error;
+
+/// What can go wrong when building or stepping an integrator.
+///
+/// A step that returns an error leaves the integrator's state (time, μ, g) exactly as it was.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum IntegratorError {
+    /// The implicit step equations were not solved to the tolerance within the iteration limit.
+    #[error("no convergence after {iterations} iterations (last residual {residual:.3e})")]
+    NoConvergence {
+        /// Iterations performed.
+        iterations: usize,
+        /// `‖r(ξ)‖_max` at the last iterate.
+        residual: f64,
+    },
+    /// NaN or an infinity met in the input, the state or an intermediate quantity.
+    #[error("non-finite value: {what} contains NaN or an infinity")]
+    NonFinite {
+        /// Which quantity was not finite.
+        what: &'static str,
+    },
+    /// The step leaves the domain of τ (τ⁻¹(τ(ξ)) ≠ ξ) or makes the Newton matrix singular.
+    #[error("step h = {step:e} too large: {reason}")]
+    StepTooLarge {
+        /// The step size that was asked for.
+        step: f64,
+        /// What went wrong.
+        reason: String,
+    },
+    /// θ outside [0, 1].
+    #[error("θ = {theta} is outside [0, 1]")]
+    InvalidTheta {
+        /// The θ that was given.
+        theta: f64,
+    },
+    /// The system has a potential V(g), so the integrator needs the configuration g.
+    #[error("the system has a potential V(g): the configuration g is required")]
+    MissingConfiguration,
+    /// A system parameter is unusable (e.g. an inertia operator that is not symmetric positive
+    /// definite).
+    #[error("invalid system parameter: {reason}")]
+    InvalidParameter {
+        /// Why the parameter was refused.
+        reason: String,
+    },
+    /// An error from `lie-groups` (a local map evaluated outside its domain).
+    #[error(transparent)]
+    Lie(#[from] LieError),
+}

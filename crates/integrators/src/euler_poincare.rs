@@ -1,0 +1,228 @@
+//! The tangent-lift (Euler–Poincaré) integrator, eq. (18) of the paper:
+//! `R̃_d^T = T R̃_d ∘ κ̃` for `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))`, θ ∈ [0, 1].
+//!
+//! ## Derivation
+//! A point `(g, ξ; ξ̄, ξ̃)` of TTG ≅ (G ⋉ 𝔤) ⋉ (𝔤 ⋉ 𝔤) is flipped by
+//! `κ̃(g, ξ, ξ̄, ξ̃) = (g, ξ̄, ξ, ξ̃ + [ξ, ξ̄])`; undoing the left trivialization of T(G ⋉ 𝔤)
+//! (whose second slot is `δξ̄ − ad_{ξ̄} (g⁻¹δg)`) the bracket cancels, and the flipped point is the
+//! tangent vector `(g⁻¹δg, δξ̄) = (ξ, ξ̃)` at the base `(g, ξ̄)`. Applying T R̃_d there
+//! (same variations as in [`crate::lie_poisson`]) gives
+//!
+//! ```text
+//! g_k     = g τ(−θξ̄),       ξ_k     = Ad_{τ(θξ̄)} ξ − θ d^Lτ_{−θξ̄} ξ̃
+//! g_{k+1} = g τ((1−θ)ξ̄),    ξ_{k+1} = Ad_{τ(−(1−θ)ξ̄)} ξ + (1−θ) d^Lτ_{(1−θ)ξ̄} ξ̃.
+//! ```
+//!
+//! The trivialized Euler–Poincaré field is `X̃(g, ξ) = (g, ξ; ξ, f(g, ξ))` with
+//! `f(g, ξ) = ξ̇ = ∂²h/∂μ² (ad*_ξ μ + F(g))`, μ = ∂l/∂ξ, F = −T*_e L_g dV. Eq. (18),
+//! `(ξ̄, ξ̃) = h (ξ, f(g, ξ))`, then reads, with unknown base velocity ξ and ḡ = g_k τ(θhξ):
+//!
+//! ```text
+//! ξ_k     = Ad_{τ(θhξ)} ξ − θh d^Lτ_{−θhξ} f(ḡ, ξ)         (n implicit equations for ξ)
+//! ξ_{k+1} = Ad_{τ(−(1−θ)hξ)} ξ + (1−θ)h d^Lτ_{(1−θ)hξ} f(ḡ, ξ)
+//! g_{k+1} = ḡ τ((1−θ)hξ)
+//! ```
+//!
+//! θ = 0 is explicit (ξ = ξ_k, ḡ = g_k). The state is (g, ξ); its momentum is μ = ∂l/∂ξ.
+//! Unlike the Lie–Poisson integrator, this one does not keep μ on its coadjoint orbit.
+
+use crate::lie_poisson::{check_state, check_theta};
+use crate::solver::{ad_dual_operator, check_tau_domain, solve};
+use crate::system::force;
+use crate::{Integrator, IntegratorError, SolverConfig, System};
+use core::marker::PhantomData;
+use lie_groups::{LieGroup, Operator, Tau, Vector};
+
+/// The Euler–Poincaré integrator (eq. 18) on G with τ map `T`, parameter θ, for the system `S`.
+///
+/// State: time t, body velocity ξ ∈ 𝔤, and the configuration g when it is reconstructed.
+#[derive(Debug, Clone)]
+pub struct EulerPoincare<G: LieGroup, T: Tau<G>, S: System<G>> {
+    system: S,
+    theta: f64,
+    config: SolverConfig,
+    t: f64,
+    xi: G::Algebra,
+    g: Option<G>,
+    iterations: usize,
+    _tau: PhantomData<T>,
+}
+
+impl<G: LieGroup, T: Tau<G>, S: System<G>> EulerPoincare<G, T, S> {
+    /// Builds the integrator at t = 0 from the body velocity ξ₀ and optionally g₀.
+    pub fn new(
+        system: S,
+        theta: f64,
+        xi0: G::Algebra,
+        g0: Option<G>,
+    ) -> Result<Self, IntegratorError> {
+        check_theta(theta)?;
+        check_state(&system, &xi0, "velocity ξ", g0.as_ref())?;
+        Ok(Self {
+            system,
+            theta,
+            config: SolverConfig::default(),
+            t: 0.0,
+            xi: xi0,
+            g: g0,
+            iterations: 0,
+            _tau: PhantomData,
+        })
+    }
+    /// Builds the integrator from the momentum μ₀ (ξ₀ = ∂h/∂μ(μ₀)).
+    pub fn from_momentum(
+        system: S,
+        theta: f64,
+        mu0: G::Algebra,
+        g0: Option<G>,
+    ) -> Result<Self, IntegratorError> {
+        check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
+        let xi0 = system.velocity(&mu0);
+        Self::new(system, theta, xi0, g0)
+    }
+    /// Replaces the solver configuration.
+    pub fn with_solver(mut self, config: SolverConfig) -> Self {
+        self.config = config;
+        self
+    }
+    /// Resets the state to (t, ξ, g), with the checks of [`EulerPoincare::new`].
+    pub fn reset(&mut self, t: f64, xi: G::Algebra, g: Option<G>) -> Result<(), IntegratorError> {
+        if !t.is_finite() {
+            return Err(IntegratorError::NonFinite { what: "time t" });
+        }
+        check_state(&self.system, &xi, "velocity ξ", g.as_ref())?;
+        self.t = t;
+        self.xi = xi;
+        self.g = g;
+        Ok(())
+    }
+    /// The system.
+    pub fn system(&self) -> &S {
+        &self.system
+    }
+    /// θ.
+    pub fn theta(&self) -> f64 {
+        self.theta
+    }
+    /// Solver iterations used by the last successful step (0 for θ = 0 or before the first).
+    pub fn last_iterations(&self) -> usize {
+        self.iterations
+    }
+
+    /// `f(g, ξ) = ∂²h/∂μ² (ad*_ξ μ + F(g))`, μ = ∂l/∂ξ: the Euler–Poincaré vector field.
+    fn field(&self, g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
+        let mu = self.system.momentum(xi);
+        let mut rhs = G::ad_dual_apply(xi, &mu);
+        if let Some(f) = force(&self.system, g) {
+            rhs = rhs.add(&f);
+        }
+        self.system.hessian(&mu).apply(&rhs)
+    }
+
+    fn base(&self, a: f64, xi: &G::Algebra) -> Option<G> {
+        self.g.as_ref().map(|gk| gk.compose(&T::tau(&xi.scale(a))))
+    }
+
+    /// r(ξ) = Ad_{τ(aξ)} ξ − a d^Lτ_{−aξ} f(ḡ, ξ) − ξ_k, a = θh.
+    fn residual(&self, a: f64, xi: &G::Algebra) -> G::Algebra {
+        let xa = xi.scale(a);
+        let ta: G = T::tau(&xa);
+        let f = self.field(self.base(a, xi).as_ref(), xi);
+        ta.adjoint_apply(xi)
+            .sub(&T::dtau_left(&xa.neg()).apply(&f).scale(a))
+            .sub(&self.xi)
+    }
+
+    /// ∂r/∂ξ up to O(h²): `Ad_{τ(aξ)} (I − a ad_ξ d^Lτ_{aξ}) − a d^Lτ_{−aξ} ∂f/∂ξ`,
+    /// `∂f/∂ξ ≈ H (M(μ) + ad_ξᵀ H⁻¹)`, H = ∂²h/∂μ², M(μ) = (δ ↦ ad*_δ μ) (drops ∂H/∂μ and ∂F).
+    fn jacobian(&self, a: f64, xi: &G::Algebra) -> G::Operator {
+        let n = G::dim();
+        let xa = xi.scale(a);
+        let ta: G = T::tau(&xa);
+        let id = G::Operator::identity(n);
+        let first = ta
+            .adjoint()
+            .compose(&id.add(&G::ad(xi).compose(&T::dtau_left(&xa)).scale(-a)));
+        let mu = self.system.momentum(xi);
+        let hess = self.system.hessian(&mu);
+        let mut df = hess.compose(&ad_dual_operator::<G>(&mu));
+        if let Some(hinv) = hess.try_inverse() {
+            df = df.add(&hess.compose(&G::ad(xi).transpose()).compose(&hinv));
+        }
+        first.add(&T::dtau_left(&xa.neg()).compose(&df).scale(-a))
+    }
+}
+
+impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S> {
+    type Group = G;
+
+    fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
+        if !h.is_finite() {
+            return Err(IntegratorError::NonFinite { what: "step h" });
+        }
+        let a = self.theta * h;
+        let b = (1.0 - self.theta) * h;
+        let (xi, iterations) = if self.theta == 0.0 {
+            (self.xi.clone(), 0)
+        } else {
+            let residual = |xi: &G::Algebra| Ok(self.residual(a, xi));
+            solve::<G>(&self.config, h, self.xi.clone(), residual, |xi| {
+                self.jacobian(a, xi)
+            })?
+        };
+        if self.config.check_domain {
+            check_tau_domain::<G, T>(&xi.scale(h), h)?;
+        }
+        let gbar = self.base(a, &xi);
+        let f = self.field(gbar.as_ref(), &xi);
+        let xb = xi.scale(b);
+        let tb: G = T::tau(&xb);
+        let xi1 = tb
+            .inverse()
+            .adjoint_apply(&xi)
+            .add(&T::dtau_left(&xb).apply(&f).scale(b));
+        if !xi1.is_finite() {
+            return Err(IntegratorError::NonFinite {
+                what: "velocity ξ_{k+1}",
+            });
+        }
+        let g1 = match gbar {
+            Some(gb) => {
+                let g1 = gb.compose(&tb);
+                if !g1.is_finite() {
+                    return Err(IntegratorError::NonFinite {
+                        what: "configuration g_{k+1}",
+                    });
+                }
+                Some(g1)
+            }
+            None => None,
+        };
+        self.xi = xi1;
+        self.g = g1;
+        self.t += h;
+        self.iterations = iterations;
+        Ok(())
+    }
+    fn time(&self) -> f64 {
+        self.t
+    }
+    fn momentum(&self) -> G::Algebra {
+        self.system.momentum(&self.xi)
+    }
+    fn velocity(&self) -> G::Algebra {
+        self.xi.clone()
+    }
+    fn configuration(&self) -> Option<&G> {
+        self.g.as_ref()
+    }
+    fn energy(&self) -> f64 {
+        self.system.energy(&self.momentum(), self.g.as_ref())
+    }
+    fn casimir(&self) -> Option<f64> {
+        self.system.casimir(&self.momentum())
+    }
+    fn method_name(&self) -> String {
+        format!("euler-poincare(tau={}, theta={})", T::NAME, self.theta)
+    }
+}

@@ -1,0 +1,308 @@
+//! The cotangent-lift (Lie–Poisson) integrator, eq. (19) of the paper, for the discretization map
+//! `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))`, θ ∈ [0, 1].
+//!
+//! ## Derivation (composing α̃, T*R̃_d⁻¹ and Φ̃ as in §4)
+//! Write `ḡ = g_k τ(θξ)` for the base point, so that `g_k = ḡ τ(−θξ)` and
+//! `g_{k+1} = ḡ τ((1−θ)ξ)`. Varying (ḡ, ξ) by (ḡ η, δξ):
+//! `g_k⁻¹ δg_k = Ad_{τ(θξ)} η − θ d^Lτ_{−θξ} δξ`,
+//! `g_{k+1}⁻¹ δg_{k+1} = Ad_{τ(−(1−θ)ξ)} η + (1−θ) d^Lτ_{(1−θ)ξ} δξ`.
+//! So a covector `(P_k, P_{k+1})` of G × G (left-trivialized) pulls back to
+//! `p_g = Ad*_{τ(θξ)} P_k + Ad*_{τ(−(1−θ)ξ)} P_{k+1}`,
+//! `p_ξ = −θ d^{L*}τ_{−θξ} P_k + (1−θ) d^{L*}τ_{(1−θ)ξ} P_{k+1}`.
+//! The trivialization of T*(G ⋉ 𝔤) adds `ad*_ξ p_ξ` to the first slot and α̃⁻¹ subtracts it
+//! again, so the point of TT*G is `(ḡ, μ̄ = p_ξ; ξ, ν = p_g)` with ν = μ̇ − ad*_ξ μ the trivialized
+//! momentum velocity. The twist is `Φ̃: (P_k, P_{k+1}) = (−μ_k, μ_{k+1})` — the opposite of the
+//! sign printed in §4, which runs the reconstruction backwards (NOTES.md, slip 2; the tests
+//! `lie_poisson_*_converges_*` pin this sign). Setting `(ξ, ν) = h X̃(ḡ, μ̄)` with
+//! `X̃(g, μ) = (∂h/∂μ, F(g))`, `F = −T*_e L_g dV`, gives the scheme
+//!
+//! ```text
+//! μ̄       = θ d^{L*}τ_{−θξ} μ_k + (1−θ) d^{L*}τ_{(1−θ)ξ} μ_{k+1}
+//! ξ       = h ∂h/∂μ(μ̄)                                   (n implicit equations for ξ)
+//! μ_{k+1} = Ad*_{τ((1−θ)ξ)} (Ad*_{τ(θξ)} μ_k + h F(g_k τ(θξ)))
+//! g_{k+1} = g_k τ(θξ) τ((1−θ)ξ)
+//! ```
+//!
+//! For θ = 0 this is NOTES.md's corrected §4 scheme. Without a potential,
+//! `μ_{k+1} = Ad*_{g_k⁻¹ g_{k+1}} μ_k` stays on the coadjoint orbit of μ_k, so Casimirs are conserved
+//! to round-off, and the μ-equation does not involve g (reconstruction is optional). Using
+//! `d^{R*}τ_ξ = d^{L*}τ_ξ Ad*_{τ(ξ)}`, the schemes for θ = 0 and θ = 1 coincide without a
+//! potential. Measured orders: see the crate page.
+
+use crate::solver::{ad_dual_operator, check_tau_domain, solve};
+use crate::system::force;
+use crate::{Integrator, IntegratorError, SolverConfig, System};
+use core::cell::RefCell;
+use core::marker::PhantomData;
+use lie_groups::{LieGroup, Operator, Tau, Vector};
+
+/// The Lie–Poisson integrator (eq. 19) on G with τ map `T`, parameter θ, for the system `S`.
+///
+/// State: time t, body momentum μ ∈ 𝔤*, and the configuration g ∈ G when it is reconstructed
+/// (`None` skips reconstruction; systems with a potential require it).
+///
+/// ```
+/// use integrators::{LiePoisson, Integrator, systems::RigidBody};
+/// use lie_groups::{Cayley, So3, LieGroup};
+/// use nalgebra::Vector3;
+///
+/// let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+/// let mut lp = LiePoisson::<So3, Cayley, _>::new(body, 0.5, Vector3::new(1.0, 0.1, 0.5),
+///                                               Some(So3::identity())).unwrap();
+/// lp.step(0.01).unwrap();
+/// assert!((lp.time() - 0.01).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone)]
+pub struct LiePoisson<G: LieGroup, T: Tau<G>, S: System<G>> {
+    system: S,
+    theta: f64,
+    config: SolverConfig,
+    t: f64,
+    mu: G::Algebra,
+    g: Option<G>,
+    iterations: usize,
+    _tau: PhantomData<T>,
+}
+
+/// Refuses θ outside [0, 1] (NaN included).
+pub(crate) fn check_theta(theta: f64) -> Result<(), IntegratorError> {
+    if (0.0..=1.0).contains(&theta) {
+        Ok(())
+    } else {
+        Err(IntegratorError::InvalidTheta { theta })
+    }
+}
+
+/// Refuses non-finite algebra vectors and group elements, and a missing g where V needs it.
+pub(crate) fn check_state<G: LieGroup, S: System<G>>(
+    system: &S,
+    v: &G::Algebra,
+    what: &'static str,
+    g: Option<&G>,
+) -> Result<(), IntegratorError> {
+    if v.dim() != G::dim() {
+        return Err(IntegratorError::InvalidParameter {
+            reason: format!("{what} has dimension {}, the algebra {}", v.dim(), G::dim()),
+        });
+    }
+    if !v.is_finite() {
+        return Err(IntegratorError::NonFinite { what });
+    }
+    if let Some(g) = g {
+        if !g.is_finite() {
+            return Err(IntegratorError::NonFinite {
+                what: "configuration g",
+            });
+        }
+    } else if system.has_potential() {
+        return Err(IntegratorError::MissingConfiguration);
+    }
+    Ok(())
+}
+
+impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
+    /// Builds the integrator at t = 0 from μ₀ and optionally g₀, with the default
+    /// [`SolverConfig`]. Errors: θ ∉ [0, 1], non-finite μ₀ or g₀, g₀ missing for a system with a
+    /// potential.
+    pub fn new(
+        system: S,
+        theta: f64,
+        mu0: G::Algebra,
+        g0: Option<G>,
+    ) -> Result<Self, IntegratorError> {
+        check_theta(theta)?;
+        check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
+        Ok(Self {
+            system,
+            theta,
+            config: SolverConfig::default(),
+            t: 0.0,
+            mu: mu0,
+            g: g0,
+            iterations: 0,
+            _tau: PhantomData,
+        })
+    }
+    /// Replaces the solver configuration.
+    pub fn with_solver(mut self, config: SolverConfig) -> Self {
+        self.config = config;
+        self
+    }
+    /// Resets the state to (t, μ, g), with the checks of [`LiePoisson::new`].
+    pub fn reset(&mut self, t: f64, mu: G::Algebra, g: Option<G>) -> Result<(), IntegratorError> {
+        if !t.is_finite() {
+            return Err(IntegratorError::NonFinite { what: "time t" });
+        }
+        check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
+        self.t = t;
+        self.mu = mu;
+        self.g = g;
+        Ok(())
+    }
+    /// The system.
+    pub fn system(&self) -> &S {
+        &self.system
+    }
+    /// θ.
+    pub fn theta(&self) -> f64 {
+        self.theta
+    }
+    /// The solver configuration.
+    pub fn solver(&self) -> &SolverConfig {
+        &self.config
+    }
+    /// Solver iterations used by the last successful step (0 before the first).
+    pub fn last_iterations(&self) -> usize {
+        self.iterations
+    }
+
+    /// For a trial ξ: μ̄, μ_{k+1}, ν = Ad*_{τ(θξ)} μ_k + h F(ḡ) and τ((1−θ)ξ).
+    fn evaluate(&self, h: f64, xi: &G::Algebra) -> Evaluation<G> {
+        let th = self.theta;
+        let b = 1.0 - th;
+        let ta: G = T::tau(&xi.scale(th));
+        // θ = ½: τ(θξ) and τ((1−θ)ξ) are the same element; evaluate it once.
+        let tb: G = if th == b {
+            ta.clone()
+        } else {
+            T::tau(&xi.scale(b))
+        };
+        let mut nu = ta.coadjoint_apply(&self.mu);
+        if let Some(gk) = self.g.as_ref() {
+            if let Some(f) = force(&self.system, Some(&gk.compose(&ta))) {
+                nu = nu.axpy(h, &f);
+            }
+        }
+        let mu1 = tb.coadjoint_apply(&nu);
+        let mut bar = T::dtau_left_dual_apply(&xi.scale(b), &mu1).scale(b);
+        if th != 0.0 {
+            bar = bar.axpy(th, &T::dtau_left_dual_apply(&xi.scale(-th), &self.mu));
+        }
+        Evaluation { bar, mu1, nu, tb }
+    }
+
+    /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)), exact up to O(h²) (see [`crate::solver`]), from the
+    /// [`Self::evaluate`] of the same ξ.
+    fn jacobian(&self, h: f64, xi: &G::Algebra, ev: &Evaluation<G>) -> G::Operator {
+        let n = G::dim();
+        let th = self.theta;
+        let b = 1.0 - th;
+        let xa = xi.scale(th);
+        let xb = xi.scale(b);
+        let dtb = T::dtau_left(&xb);
+        let m1 = ad_dual_operator::<G>(&ev.mu1);
+        // ∂μ_{k+1}/∂ξ = (1−θ) M(μ_{k+1}) d^Lτ_{(1−θ)ξ} + θ Ad*_{τ((1−θ)ξ)} M(ν) d^Lτ_{θξ},
+        // M(μ) := (δ ↦ ad*_δ μ); exact but for the force's derivative.
+        let dmu1 = m1.compose(&dtb).scale(b).add(
+            &ev.tb
+                .adjoint()
+                .transpose()
+                .compose(&ad_dual_operator::<G>(&ev.nu))
+                .compose(&T::dtau_left(&xa))
+                .scale(th),
+        );
+        // ∂μ̄/∂ξ ≈ θ²/2 M(μ_k) − (1−θ)²/2 M(μ_{k+1}) + (1−θ) d^{L*}τ_{(1−θ)ξ} ∂μ_{k+1}/∂ξ.
+        let dbar = dtb
+            .transpose()
+            .compose(&dmu1)
+            .scale(b)
+            .add(&m1.scale(-0.5 * b * b))
+            .add(&ad_dual_operator::<G>(&self.mu).scale(0.5 * th * th));
+        G::Operator::identity(n).add(&self.system.hessian(&ev.bar).compose(&dbar).scale(-h))
+    }
+}
+
+/// The quantities of one evaluation of the step map at a trial ξ, shared by the residual and
+/// the Newton Jacobian at the same ξ.
+struct Evaluation<G: LieGroup> {
+    bar: G::Algebra,
+    mu1: G::Algebra,
+    nu: G::Algebra,
+    tb: G,
+}
+
+/// Whether two algebra vectors are bitwise equal (the Jacobian reuses an evaluation only then).
+fn same_point<V: Vector>(a: &V, b: &V) -> bool {
+    (0..a.dim()).all(|i| a.get(i).to_bits() == b.get(i).to_bits())
+}
+
+impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
+    type Group = G;
+
+    fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
+        if !h.is_finite() {
+            return Err(IntegratorError::NonFinite { what: "step h" });
+        }
+        // Explicit predictor ξ⁰ = h ∂h/∂μ(μ_k): an O(h²) guess.
+        let guess = self.system.velocity(&self.mu).scale(h);
+        // The last residual evaluation, reused by the Newton Jacobian at the same ξ (the solver
+        // calls jacobian(ξ) right after residual(ξ)); bitwise the same as recomputing it.
+        let last: RefCell<Option<(G::Algebra, Evaluation<G>)>> = RefCell::new(None);
+        let residual = |xi: &G::Algebra| {
+            let ev = self.evaluate(h, xi);
+            let r = xi.sub(&self.system.velocity(&ev.bar).scale(h));
+            *last.borrow_mut() = Some((xi.clone(), ev));
+            Ok(r)
+        };
+        let jacobian = |xi: &G::Algebra| match last.borrow_mut().take() {
+            Some((at, ev)) if same_point(&at, xi) => self.jacobian(h, xi, &ev),
+            _ => self.jacobian(h, xi, &self.evaluate(h, xi)),
+        };
+        let (xi, iterations) = solve::<G>(&self.config, h, guess, residual, jacobian)?;
+        if self.config.check_domain {
+            check_tau_domain::<G, T>(&xi, h)?;
+        }
+        let Evaluation { mu1, tb, .. } = self.evaluate(h, &xi);
+        if !mu1.is_finite() {
+            return Err(IntegratorError::NonFinite {
+                what: "momentum μ_{k+1}",
+            });
+        }
+        let g1 = match self.g.as_ref() {
+            Some(gk) => {
+                let th = self.theta;
+                // τ((1−θ)ξ) comes from the final evaluation (for θ = ½ it is also τ(θξ)).
+                let g1 = if th == 0.0 {
+                    gk.compose(&tb)
+                } else if th == 1.0 - th {
+                    gk.compose(&tb).compose(&tb)
+                } else {
+                    gk.compose(&T::tau(&xi.scale(th))).compose(&tb)
+                };
+                if !g1.is_finite() {
+                    return Err(IntegratorError::NonFinite {
+                        what: "configuration g_{k+1}",
+                    });
+                }
+                Some(g1)
+            }
+            None => None,
+        };
+        self.mu = mu1;
+        self.g = g1;
+        self.t += h;
+        self.iterations = iterations;
+        Ok(())
+    }
+    fn time(&self) -> f64 {
+        self.t
+    }
+    fn momentum(&self) -> G::Algebra {
+        self.mu.clone()
+    }
+    fn velocity(&self) -> G::Algebra {
+        self.system.velocity(&self.mu)
+    }
+    fn configuration(&self) -> Option<&G> {
+        self.g.as_ref()
+    }
+    fn energy(&self) -> f64 {
+        self.system.energy(&self.mu, self.g.as_ref())
+    }
+    fn casimir(&self) -> Option<f64> {
+        self.system.casimir(&self.mu)
+    }
+    fn method_name(&self) -> String {
+        format!("lie-poisson(tau={}, theta={})", T::NAME, self.theta)
+    }
+}

@@ -1,0 +1,65 @@
+//! Mechanical systems on a Lie group G (§2 of the paper), described by a reduced Hamiltonian.
+//!
+//! A [`System`] gives the reduced Hamiltonian h: 𝔤* → ℝ with its derivatives, the Legendre map
+//! ξ ↦ μ = ∂l/∂ξ (the inverse of μ ↦ ∂h/∂μ) and, optionally, a potential V: G → ℝ. The equations of
+//! motion it defines are, with F(g) = −T*_e L_g dV(g) the left-trivialized force (§2.1):
+//!
+//! - Lie–Poisson form: `μ̇ = ad*_{∂h/∂μ} μ + F(g)`, `ġ = g ∂h/∂μ`;
+//! - Euler–Poincaré form: `d/dt ∂l/∂ξ = ad*_ξ ∂l/∂ξ + F(g)`, `ġ = g ξ`, i.e.
+//!   `ξ̇ = ∂²h/∂μ² (ad*_ξ μ + F(g))` with μ = ∂l/∂ξ.
+//!
+//! Conventions (see `lie-groups`): `ad*_ξ := (ad_ξ)ᵀ`, 𝔤* ≅ ℝⁿ by the Euclidean pairing.
+
+use lie_groups::{LieGroup, Vector};
+
+/// A mechanical system on G with reduced Hamiltonian h(μ) and optional potential V(g).
+///
+/// Only the kinetic part lives in 𝔤*: the total energy is `E(g, μ) = h(μ) + V(g)`. A system with
+/// [`System::has_potential`] `== true` needs the configuration g to be integrated (the force depends
+/// on it); without a potential the momentum equation decouples and g is optional.
+pub trait System<G: LieGroup> {
+    /// The reduced Hamiltonian h(μ) (the kinetic energy for a mechanical system).
+    fn hamiltonian(&self, mu: &G::Algebra) -> f64;
+    /// `∂h/∂μ ∈ 𝔤`, the body velocity belonging to μ.
+    fn velocity(&self, mu: &G::Algebra) -> G::Algebra;
+    /// The Hessian `∂²h/∂μ²: 𝔤* → 𝔤` at μ, as an n×n operator (used by Newton's method and by the
+    /// Euler–Poincaré vector field).
+    fn hessian(&self, mu: &G::Algebra) -> G::Operator;
+    /// The Legendre map `ξ ↦ μ = ∂l/∂ξ`, the inverse of `μ ↦ ∂h/∂μ`.
+    fn momentum(&self, xi: &G::Algebra) -> G::Algebra;
+
+    /// Whether the system has a potential V(g) (then integrators require g).
+    fn has_potential(&self) -> bool {
+        false
+    }
+    /// The potential V(g); 0 without one.
+    fn potential(&self, _g: &G) -> f64 {
+        0.0
+    }
+    /// The left-trivialized differential `T*_e L_g dV(g) ∈ 𝔤*`, defined by
+    /// `⟨T*_e L_g dV(g), ζ⟩ = d/ds V(g exp(sζ))|_{s=0}`; zero without a potential.
+    ///
+    /// The force entering the equations of motion is its negative, `F(g) = −T*_e L_g dV(g)`.
+    fn potential_differential(&self, _g: &G) -> G::Algebra {
+        G::Algebra::zeros(G::dim())
+    }
+    /// A Casimir function C(μ) of the Lie–Poisson bracket, where the system has one it wants
+    /// monitored (|Π|² for the free rigid body). Conserved exactly by the flow when there is no
+    /// potential.
+    fn casimir(&self, _mu: &G::Algebra) -> Option<f64> {
+        None
+    }
+    /// The total energy `E = h(μ) + V(g)`; `g = None` counts V as 0 (only meaningful without a
+    /// potential).
+    fn energy(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
+        self.hamiltonian(mu) + g.map_or(0.0, |g| self.potential(g))
+    }
+}
+
+/// The trivialized force `F(g) = −T*_e L_g dV(g)`, zero when the system has no potential or no g.
+pub(crate) fn force<G: LieGroup, S: System<G>>(system: &S, g: Option<&G>) -> Option<G::Algebra> {
+    match g {
+        Some(g) if system.has_potential() => Some(system.potential_differential(g).neg()),
+        _ => None,
+    }
+}

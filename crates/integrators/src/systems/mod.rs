@@ -1,0 +1,21 @@
+//! Concrete mechanical systems, each implementing [`crate::System`].
+//!
+//! | system | group | potential | conserved |
+//! |---|---|---|---|
+//! | [`RigidBody`] | SO(3) | — | energy, \|Π\|² |
+//! | [`HeavyTop`] | SO(3) | `m g ⟨Rχ, e₃⟩` | energy, `⟨RΠ, e₃⟩` (Lagrange top: also Π₃) |
+//! | [`RigidBodySe3`] | SE(3) | free, or MacCullagh central gravity | energy, `RΠ + x × RP` |
+//! | [`PlanarBody`] | SE(2) | spring `½k\|x + Rc\|²`, gravity `−m⟨γ, x⟩` | energy, momentum maps |
+//! | [`GeneralizedRigidBody`] | SO(n) | — | energy, `tr(M^{2k})` |
+
+pub mod geodesic_so_n;
+pub mod heavy_top;
+pub mod planar_body_se2;
+mod rigid_body;
+pub mod rigid_body_se3;
+
+pub use geodesic_so_n::GeneralizedRigidBody;
+pub use heavy_top::HeavyTop;
+pub use planar_body_se2::PlanarBody;
+pub use rigid_body::RigidBody;
+pub use rigid_body_se3::RigidBodySe3;
