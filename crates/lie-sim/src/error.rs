@@ -57,6 +57,28 @@ pub enum SimError {
         /// What is missing.
         why: String,
     },
+    /// The method does not apply to the system (Euler–Arnold on a system with a potential).
+    #[error("{what}: {why}")]
+    Inapplicable {
+        /// The combination, e.g. `heavy-top with euler-arnold (τ = exp, θ = 0.5)`.
+        what: String,
+        /// Why it does not apply.
+        why: String,
+    },
+    /// `lie-sim sweep` cannot run: no `[sweep]` table, a bad `--shard`, an initial momentum the
+    /// sweep cannot be drawn around.
+    #[error("sweep: {message}")]
+    Sweep {
+        /// What was wrong.
+        message: String,
+    },
+    /// `lie-sim merge` refused its inputs: different sweeps, a shard missing or given twice, an
+    /// index missing or duplicated, a file that is not a shard written by `lie-sim sweep`.
+    #[error("merge: {message}")]
+    Merge {
+        /// What was wrong, naming the file where there is one.
+        message: String,
+    },
     /// The integrators crate refused the scene's system or initial state.
     #[error("cannot build {what}: {message}")]
     Build {

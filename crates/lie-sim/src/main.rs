@@ -6,6 +6,9 @@
 //! lie-sim run SCENE.toml --out traj.csv     run a scene, write its trajectory as CSV
 //! lie-sim plot traj.csv --out plot.svg      energy error, Casimir error and momentum against time
 //! lie-sim trade SCENE.toml                  work-precision table of every method, CSV and SVG
+//! lie-sim sweep SCENE.toml --out s.csv      the scene's [sweep] ensemble on every core, one row
+//!         [--shard i/n] [--threads k]       per trajectory; shard i of n only (0-based)
+//! lie-sim merge s0.csv s1.csv … --out s.csv merge shard outputs into the full table
 //! lie-sim default-scene                     print the embedded default scene, a starting point
 //! ```
 //!
@@ -17,10 +20,12 @@ mod plot;
 mod run;
 mod scene;
 mod sim;
+mod sweep;
 mod trade;
 
 use clap::{Args, Parser, Subcommand};
 use error::SimError;
+use integrators::ensemble::Shard;
 use scene::{Overrides, Scene};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -86,8 +91,50 @@ enum Command {
         #[command(flatten)]
         overrides: OverrideArgs,
     },
+    /// Run the scene's [sweep] ensemble (rayon) and write one summary row per trajectory as CSV.
+    ///
+    /// Bit-identical whatever the thread count or shard split. See docs/ensembles.md.
+    Sweep {
+        /// The scene file (TOML) with a [sweep] table.
+        scene: PathBuf,
+        /// Summary CSV [default: target/lie-sim/<scene>-sweep.csv].
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+        /// Run only shard i of n, 0-based (0 ≤ i < n): the members ⌊iN/n⌋ … ⌊(i+1)N/n⌋ − 1.
+        /// Merge the n outputs with `lie-sim merge`.
+        #[arg(long, value_name = "i/n", value_parser = parse_shard)]
+        shard: Option<Shard>,
+        /// Worker threads (1: sequential) [default: one per core, or RAYON_NUM_THREADS].
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+        threads: Option<u32>,
+        /// Replace the sweep's count N.
+        #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+        count: Option<u64>,
+        /// Replace the sweep's seed.
+        #[arg(long)]
+        seed: Option<u64>,
+        #[command(flatten)]
+        overrides: OverrideArgs,
+    },
+    /// Merge the shard CSVs of one sweep (`lie-sim sweep --shard i/n`) into the full table.
+    ///
+    /// The result is byte for byte the unsharded sweep's CSV. Refuses shards of different sweeps,
+    /// a missing or repeated shard, and a missing or repeated member index.
+    Merge {
+        /// The shard CSVs, in any order.
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
+        /// The merged CSV.
+        #[arg(short, long)]
+        out: PathBuf,
+    },
     /// Print the embedded default scene (a commented starting point for your own).
     DefaultScene,
+}
+
+fn parse_shard(s: &str) -> Result<Shard, String> {
+    s.parse::<Shard>()
+        .map_err(|_| format!("{s:?} is not a shard i/n with 0 ≤ i < n (0-based)"))
 }
 
 /// Overrides of the scene's values, checked like the scene's own.
@@ -166,6 +213,14 @@ fn cmd_run(
     println!("  method       {}", m.method);
     println!("  tau          {}", m.tau_label());
     println!("  theta        {}", m.theta_label());
+    if let Some(c) = &m.composition {
+        println!(
+            "  composition  {} (order {} from {} steps of the θ = ½ method per step)",
+            c.name(),
+            c.order(),
+            c.stages()
+        );
+    }
     println!(
         "  steps        {} × h = {} to T = {}{}",
         summary.steps,
@@ -255,9 +310,22 @@ fn cmd_trade(
     );
     for (m, rows) in trade::by_method(&report.rows) {
         match trade::fitted_order(&rows, report.reference.estimated_error) {
-            Some(p) => println!("  {:<40} {p:.2}", m.to_string()),
-            None => println!("  {:<40} -", m.to_string()),
+            Some(p) => println!("  {:<52} {p:.2}", m.to_string()),
+            None => println!("  {:<52} -", m.to_string()),
         }
+    }
+    if !report.inapplicable.is_empty() {
+        let mut names: Vec<&str> = report
+            .inapplicable
+            .iter()
+            .map(|m| m.method.name())
+            .collect();
+        names.dedup();
+        println!(
+            "not applicable to {}: {} (needs a purely kinetic Lagrangian)",
+            scene.system.kind(),
+            names.join(", ")
+        );
     }
     if !report.unavailable.is_empty() {
         let names: Vec<String> = report.unavailable.iter().map(|m| m.to_string()).collect();
@@ -271,6 +339,84 @@ fn cmd_trade(
     }
     trade::write_outputs(&report, &scene, &csv, &svg)?;
     println!("table: {}\nplot:  {}", csv.display(), svg.display());
+    Ok(())
+}
+
+#[allow(clippy::too_many_arguments)] // one per command-line option
+fn cmd_sweep(
+    scene_path: &Path,
+    out: Option<PathBuf>,
+    shard: Option<Shard>,
+    threads: Option<u32>,
+    count: Option<u64>,
+    seed: Option<u64>,
+    overrides: OverrideArgs,
+) -> Result<(), SimError> {
+    let (mut scene, stem) = load(Some(scene_path), overrides)?;
+    if let Some(spec) = scene.sweep.as_mut() {
+        if let Some(c) = count {
+            spec.count = usize::try_from(c).map_err(|_| SimError::Sweep {
+                message: format!("--count {c} does not fit this machine"),
+            })?;
+        }
+        if let Some(s) = seed {
+            spec.seed = s;
+        }
+    }
+    let out = out.unwrap_or_else(|| default_path(&stem, "-sweep.csv"));
+    let shard = shard.unwrap_or_else(Shard::all);
+    let (spec, steps, h) = sweep::plan(&scene)?;
+    let (result, spec2, wall) = sweep::run(&scene, shard, threads.map(|t| t as usize))?;
+    debug_assert_eq!(spec, spec2);
+    let fp = sweep::fingerprint(&scene, &spec, steps, h);
+    sweep::write(&out, &sweep::to_csv(&result, spec.count, shard, fp))?;
+
+    let k = result.rows.len();
+    println!("lie-sim sweep: {} ({})", scene.name, scene.source);
+    println!("  system       {}", scene.system.kind());
+    println!("  method       {}", scene.method);
+    println!(
+        "  members      {} {} (seed {}); shard {shard} (0-based): {k} trajectories",
+        spec.count,
+        spec.kind.name(),
+        spec.seed
+    );
+    println!("  steps        {steps} × h = {h} to T = {}", scene.duration);
+    println!(
+        "  threads      {}",
+        match threads {
+            Some(1) => "1 (sequential)".to_string(),
+            Some(t) => t.to_string(),
+            None => format!("{} (one per core)", rayon::current_num_threads()),
+        }
+    );
+    println!(
+        "  wall time    {} ({:.1} trajectories/s)",
+        human_duration(wall),
+        k as f64 / wall.as_secs_f64().max(1e-9)
+    );
+    println!("  completed    {} / {k}", result.completed);
+    if let Some(f) = &result.first_failure {
+        println!("  first failure {f}");
+    }
+    println!(
+        "  energy       max |E − E₀| = {:.3e} (over completed trajectories)",
+        result.max_energy_error
+    );
+    if let Some(c) = result.max_casimir_error {
+        println!("  casimir      max |C − C₀| = {c:.3e}");
+    }
+    println!("  summary      {} ({k} rows)", out.display());
+    Ok(())
+}
+
+fn cmd_merge(shards: &[PathBuf], out: &Path) -> Result<(), SimError> {
+    let (text, files, members) = sweep::merge(shards)?;
+    sweep::write(out, &text)?;
+    println!(
+        "lie-sim merge: {files} shard files, {members} members, to {}",
+        out.display()
+    );
     Ok(())
 }
 
@@ -302,6 +448,16 @@ fn main() -> ExitCode {
             repeats,
             overrides,
         }) => cmd_trade(scene.as_deref(), out, plot, levels, repeats, overrides),
+        Some(Command::Sweep {
+            scene,
+            out,
+            shard,
+            threads,
+            count,
+            seed,
+            overrides,
+        }) => cmd_sweep(&scene, out, shard, threads, count, seed, overrides),
+        Some(Command::Merge { shards, out }) => cmd_merge(&shards, &out),
         Some(Command::DefaultScene) => {
             print!("{}", scene::DEFAULT_SCENE);
             Ok(())

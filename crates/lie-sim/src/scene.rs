@@ -22,10 +22,28 @@
 //! reconstruct = true                # integrate g as well as μ (default true)
 //! # tolerance = 1e-14               # implicit solver options (default: the integrators crate's)
 //! # max_iterations = 50
+//! # composition = "kahan-li-6"      # optional: compose the θ = ½ method to order 4, 6, 8, … (below)
 //!
 //! [output]
 //! stride = 10                       # write every 10th step (default 1); t = 0 and t = T always
+//!
+//! [sweep]                           # optional: the ensemble run by `lie-sim sweep`
+//! count = 10000                     # N trajectories
+//! seed = 1                          # member i depends only on (seed, i) (default 0)
+//! kind = "momenta-on-energy-level"  # or "momenta-on-sphere"
+//! # monitor_every = 1               # energy/Casimir sampled every k steps (and the last)
 //! ```
+//!
+//! `composition` names a scheme of `integrators::CompositionScheme` (`triple-jump-4|6|8|10`,
+//! `suzuki-4|6|8|10`, `mclachlan-4`, `kahan-li-6`, `kahan-li-8`, `mclachlan-8`,
+//! `sofroniou-spaletta-10`): one step of size h is the steps γ₁h, …, γ_s h of the base method.
+//! It needs a symmetric base: `lie-poisson`, `euler-poincare` or `euler-arnold` with θ = 0.5.
+//!
+//! `euler-arnold` is the Euler–Poincaré integrator of the quadratic Lagrangian l(ξ) = ½⟨𝕀ξ, ξ⟩,
+//! with 𝕀 = (∂²h/∂μ²)⁻¹ taken from the system: only for systems without a potential.
+//!
+//! `[sweep]` draws N momenta: on the sphere |μ| = |μ₀| or on the kinetic energy level
+//! h(μ) = h(μ₀) of the scene's μ₀, every member starting from the scene's g₀ (see `lie-sim sweep`).
 //!
 //! Keys of `[system]` and `[initial]` by kind (a key another kind uses is an error, not ignored):
 //!
@@ -48,6 +66,7 @@
 //! [`Scene`]. Each stage reports one error naming the field.
 
 use crate::error::SimError;
+use integrators::CompositionScheme;
 use lie_groups::{LieGroup, So3};
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector2, Vector3, Vector6};
 use serde::Deserialize;
@@ -172,15 +191,18 @@ impl fmt::Display for TauKind {
     }
 }
 
-/// A fully specified method: the integrator, its τ map and θ where they apply.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// A fully specified method: the integrator, its τ map and θ where they apply, and optionally a
+/// composition scheme Ψ_h = Φ_{γ_s h} ∘ … ∘ Φ_{γ₁ h} wrapped around it (symmetric base only).
+#[derive(Debug, Clone, PartialEq)]
 pub struct MethodSpec {
-    /// The integrator.
+    /// The integrator (the base method Φ when `composition` is set).
     pub method: Method,
     /// τ (Lie methods and rkmk4; `None` for rk4).
     pub tau: Option<TauKind>,
     /// θ ∈ [0, 1] (Lie methods only).
     pub theta: Option<f64>,
+    /// The composition scheme raising the symmetric (θ = ½) base method to order 4, 6, 8, ….
+    pub composition: Option<CompositionScheme>,
 }
 
 impl MethodSpec {
@@ -192,10 +214,28 @@ impl MethodSpec {
     pub fn theta_label(&self) -> String {
         self.theta.map_or_else(|| "-".into(), |t| format!("{t}"))
     }
+    /// The composition scheme's name for tables (`-` without one).
+    pub fn composition_label(&self) -> String {
+        self.composition
+            .as_ref()
+            .map_or_else(|| "-".into(), |c| c.name().into())
+    }
+    /// A method without τ, θ or composition (rk4), or with the given τ (rkmk4).
+    pub fn plain(method: Method, tau: Option<TauKind>) -> Self {
+        Self {
+            method,
+            tau,
+            theta: None,
+            composition: None,
+        }
+    }
 }
 
 impl fmt::Display for MethodSpec {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(c) = &self.composition {
+            write!(f, "{} ∘ ", c.name())?;
+        }
         write!(f, "{}", self.method)?;
         match (self.tau, self.theta) {
             (Some(t), Some(th)) => write!(f, " (τ = {t}, θ = {th})"),
@@ -224,6 +264,8 @@ pub struct RawScene {
     /// `[output]` (optional).
     #[serde(default)]
     pub output: RawOutput,
+    /// `[sweep]` (optional): the ensemble run by `lie-sim sweep`.
+    pub sweep: Option<RawSweep>,
 }
 
 /// `[system]`: the kind and its physical parameters; which parameters apply depends on the kind.
@@ -320,6 +362,57 @@ pub struct RawIntegrator {
     pub tolerance: Option<f64>,
     /// Iteration limit of the implicit solver (default: the integrators crate's).
     pub max_iterations: Option<usize>,
+    /// Composition scheme around a symmetric base method (any name
+    /// `integrators::CompositionScheme` parses, e.g. `kahan-li-6`).
+    pub composition: Option<String>,
+}
+
+/// `[sweep]`: many initial momenta drawn around the scene's μ₀, for `lie-sim sweep`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSweep {
+    /// Number of trajectories N ≥ 1.
+    pub count: usize,
+    /// Seed of the initial momenta (default 0); member i depends only on (seed, i).
+    pub seed: Option<u64>,
+    /// Where the momenta lie.
+    pub kind: SweepKind,
+    /// Monitor energy and Casimir every this many steps (default 1; the last step always).
+    pub monitor_every: Option<usize>,
+}
+
+/// Where the initial momenta of a sweep are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SweepKind {
+    /// Uniform directions on the sphere |μ| = |μ₀| (`integrators::ensemble::momenta_on_sphere`).
+    MomentaOnSphere,
+    /// Uniform directions scaled onto the kinetic energy level h(μ) = h(μ₀)
+    /// (`integrators::ensemble::momenta_on_energy_level`).
+    MomentaOnEnergyLevel,
+}
+
+impl SweepKind {
+    /// The name used in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::MomentaOnSphere => "momenta-on-sphere",
+            Self::MomentaOnEnergyLevel => "momenta-on-energy-level",
+        }
+    }
+}
+
+/// A checked `[sweep]` table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SweepSpec {
+    /// N ≥ 1.
+    pub count: usize,
+    /// The seed.
+    pub seed: u64,
+    /// Where the momenta lie.
+    pub kind: SweepKind,
+    /// Monitoring stride ≥ 1.
+    pub monitor_every: usize,
 }
 
 /// `[output]`.
@@ -482,6 +575,8 @@ pub struct Scene {
     pub duration: f64,
     /// Output stride.
     pub stride: u64,
+    /// The `[sweep]` table, if the scene has one.
+    pub sweep: Option<SweepSpec>,
 }
 
 /// Command-line overrides applied to the raw scene before it is checked.
@@ -605,6 +700,32 @@ impl Scene {
         if stride == 0 {
             return Err(bad("output.stride", "must be at least 1, got 0".into()));
         }
+        if method.method == Method::EulerArnold && system.has_potential() {
+            return Err(bad(
+                "integrator.method",
+                euler_arnold_needs_kinetic(system.kind()),
+            ));
+        }
+        let sweep = match &raw.sweep {
+            None => None,
+            Some(sw) => {
+                if sw.count == 0 {
+                    return Err(bad("sweep.count", "must be at least 1, got 0".into()));
+                }
+                if sw.monitor_every == Some(0) {
+                    return Err(bad(
+                        "sweep.monitor_every",
+                        "must be at least 1, got 0".into(),
+                    ));
+                }
+                Some(SweepSpec {
+                    count: sw.count,
+                    seed: sw.seed.unwrap_or(0),
+                    kind: sw.kind,
+                    monitor_every: sw.monitor_every.unwrap_or(1),
+                })
+            }
+        };
         Ok(Scene {
             name,
             source: label.into(),
@@ -618,6 +739,7 @@ impl Scene {
             step,
             duration,
             stride,
+            sweep,
         })
     }
 
@@ -702,11 +824,58 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
         }
         None
     };
+    let composition = match &it.composition {
+        None => None,
+        Some(name) => {
+            let field = "integrator.composition";
+            let scheme: CompositionScheme = name.parse().map_err(|_| {
+                let known: Vec<String> = CompositionScheme::builtin()
+                    .iter()
+                    .map(|c| c.name().to_string())
+                    .collect();
+                (
+                    field.to_string(),
+                    format!(
+                        "unknown composition scheme \"{name}\" (known: {})",
+                        known.join(", ")
+                    ),
+                )
+            })?;
+            let symmetric_base = matches!(
+                m,
+                Method::LiePoisson | Method::EulerPoincare | Method::EulerArnold
+            ) && theta == Some(0.5);
+            if !symmetric_base {
+                let base = match theta {
+                    Some(th) => format!("{m} with θ = {th}"),
+                    None => m.to_string(),
+                };
+                return Err((
+                    field.into(),
+                    format!(
+                        "{} needs a symmetric base method (lie-poisson, euler-poincare or \
+                         euler-arnold with θ = 0.5), got {base}",
+                        scheme.name()
+                    ),
+                ));
+            }
+            Some(scheme)
+        }
+    };
     Ok(MethodSpec {
         method: m,
         tau,
         theta,
+        composition,
     })
+}
+
+/// The refusal of `euler-arnold` on a system with a potential.
+pub fn euler_arnold_needs_kinetic(kind: SystemKind) -> String {
+    format!(
+        "euler-arnold needs a purely kinetic Lagrangian l(ξ) = ½⟨𝕀ξ, ξ⟩, and this {kind} has a \
+         potential V(g); use lie-poisson or euler-poincare"
+    )
 }
 
 /// The optional `[system]` and `[initial]` keys each kind takes; any other one given is an error,

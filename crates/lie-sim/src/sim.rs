@@ -7,17 +7,21 @@
 //! only that one.
 
 use crate::error::SimError;
-use crate::scene::{GeodesicSoN, Method, MethodSpec, SolverOptions, System, TauKind};
+use crate::scene::{
+    euler_arnold_needs_kinetic, GeodesicSoN, Method, MethodSpec, SolverOptions, System, TauKind,
+};
 use faer::{Col, Mat};
 use integrators::systems::{
     GeneralizedRigidBody, HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, RigidBody,
     RigidBodySe3 as RigidBodySe3System,
 };
 use integrators::{
-    EulerPoincare, Integrator, IntegratorError, LiePoisson, QuaternionRk4, Rkmk4, SolverConfig,
+    Composition, CompositionScheme, EulerArnold, EulerPoincare, Integrator, IntegratorError,
+    LiePoisson, QuaternionRk4, Rkmk4, SolverConfig, StateSnapshot, SymmetricMethod,
 };
 use lie_groups::{
-    Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Se2, Se3, So2, So3, SoN, Vector,
+    Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Operator, Se2, Se3, So2, So3,
+    SoN, Vector,
 };
 use nalgebra::{Matrix3, Vector3, Vector6};
 
@@ -46,18 +50,75 @@ pub trait Simulation {
 /// Builds the simulation a scene names: its system with its initial state, advanced by `method`.
 ///
 /// Only the named combination is constructed. A (system, method, τ) that the integrators crate does
-/// not provide is [`SimError::NotYetAvailable`], never a panic.
+/// not provide is [`SimError::NotYetAvailable`], a method that does not apply to the system
+/// (Euler–Arnold with a potential) [`SimError::Inapplicable`]; never a panic.
 ///
 /// Systems: `integrators::systems::{RigidBody, HeavyTop, RigidBodySe3, PlanarBody,
 /// GeneralizedRigidBody<N>}` (the last for N in [`SO_N_SIZES`]). Methods: `LiePoisson` and
-/// `EulerPoincare` with τ = exp or cayley and any θ, `Rkmk4` (τ = exp) on every group,
-/// `QuaternionRk4` on the SO(3) systems.
+/// `EulerPoincare` with τ = exp or cayley and any θ; `euler-arnold`, the `EulerPoincare`
+/// integrator of the `EulerArnold` system built from the system's inertia (see
+/// [`EulerArnoldOf`]); any of these at θ = ½ inside a `Composition`; `Rkmk4` (τ = exp) on every
+/// group; `QuaternionRk4` on the SO(3) systems.
 pub fn build(
     system: &System,
     method: &MethodSpec,
     reconstruct: bool,
     solver: &SolverOptions,
 ) -> Result<Box<dyn Simulation>, SimError> {
+    dispatch(system, method, reconstruct, solver, SingleRun)
+}
+
+/// A computation generic over the group G and the system S of a scene, run by [`dispatch`] once
+/// it has built S, μ₀ and g₀. `make` turns (S, μ, g) into the scene's integrator.
+pub trait Job {
+    /// What the job produces.
+    type Out;
+    /// Runs the job on the scene's system.
+    fn run<G, S, F>(
+        self,
+        system: S,
+        mu0: G::Algebra,
+        g0: Option<G>,
+        make: F,
+    ) -> Result<Self::Out, IntegratorError>
+    where
+        G: CayleyGroup + Sync + 'static,
+        G::Algebra: Send + Sync,
+        S: integrators::System<G> + Clone + Sync + 'static,
+        F: Fn(S, G::Algebra, Option<G>) -> Result<Boxed<G>, IntegratorError> + Sync;
+}
+
+/// The [`Job`] of [`build`]: one integrator from the scene's initial state, as a [`Simulation`].
+struct SingleRun;
+
+impl Job for SingleRun {
+    type Out = Box<dyn Simulation>;
+    fn run<G, S, F>(
+        self,
+        system: S,
+        mu0: G::Algebra,
+        g0: Option<G>,
+        make: F,
+    ) -> Result<Self::Out, IntegratorError>
+    where
+        G: CayleyGroup + Sync + 'static,
+        G::Algebra: Send + Sync,
+        S: integrators::System<G> + Clone + Sync + 'static,
+        F: Fn(S, G::Algebra, Option<G>) -> Result<Boxed<G>, IntegratorError> + Sync,
+    {
+        Ok(Box::new(Adapter(make(system, mu0, g0)?)))
+    }
+}
+
+/// Builds the scene's system, μ₀ and g₀ (g₀ only when `reconstruct`), checks that the method
+/// applies, and runs `job` on them with the integrator maker of `method`.
+pub fn dispatch<J: Job>(
+    system: &System,
+    method: &MethodSpec,
+    reconstruct: bool,
+    solver: &SolverOptions,
+    job: J,
+) -> Result<J::Out, SimError> {
     let what = || format!("{} with {}", system.kind(), method);
     let unavailable = |why: &str| SimError::NotYetAvailable {
         what: what(),
@@ -72,11 +133,11 @@ pub fn build(
         message: e.to_string(),
     };
     match method.method {
-        Method::EulerArnold => {
-            return Err(unavailable(
-                "the integrators crate offers Euler–Arnold as a system (EulerArnold<G>) \
-                 integrated by lie-poisson or euler-poincare, not as a method of its own",
-            ))
+        Method::EulerArnold if system.has_potential() => {
+            return Err(SimError::Inapplicable {
+                what: what(),
+                why: euler_arnold_needs_kinetic(system.kind()),
+            })
         }
         Method::Rk4 if !matches!(system, System::FreeRigidBody(_) | System::HeavyTop(_)) => {
             return Err(unavailable(
@@ -94,7 +155,7 @@ pub fn build(
         config.max_iterations = m;
     }
     let b = Builder {
-        method: *method,
+        method: method.clone(),
         config,
     };
     let so3 = |r: &Matrix3<f64>| -> Result<Option<So3>, SimError> {
@@ -107,14 +168,18 @@ pub fn build(
     match system {
         System::FreeRigidBody(p) => {
             let body = RigidBody::new(p.inertia).map_err(built)?;
-            b.build_so3(body, p.momentum, so3(&p.attitude)?)
-                .map_err(built)
+            job.run(body, p.momentum, so3(&p.attitude)?, |s, mu, g| {
+                b.make_so3(s, mu, g)
+            })
+            .map_err(built)
         }
         System::HeavyTop(p) => {
             let top = HeavyTopSystem::new(p.inertia, p.mass, p.gravity, p.center_of_mass)
                 .map_err(built)?;
-            b.build_so3(top, p.momentum, so3(&p.attitude)?)
-                .map_err(built)
+            job.run(top, p.momentum, so3(&p.attitude)?, |s, mu, g| {
+                b.make_so3(s, mu, g)
+            })
+            .map_err(built)
         }
         System::RigidBodySe3(p) => {
             let g0 = so3(&p.attitude)?.map(|r| Se3::from_parts(r, p.position));
@@ -122,13 +187,15 @@ pub fn build(
                 let sat =
                     RigidBodySe3System::satellite(p.mass, p.inertia, p.gravitational_parameter)
                         .map_err(built)?;
-                b.build(sat, p.momentum, g0).map_err(built)
+                job.run(sat, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                    .map_err(built)
             } else {
                 let free = WithCasimir::<Se3, _> {
                     inner: RigidBodySe3System::free(p.mass, p.inertia).map_err(built)?,
                     casimir: |mu: &Vector6<f64>| mu.fixed_rows::<3>(3).norm_squared(),
                 };
-                b.build(free, p.momentum, g0).map_err(built)
+                job.run(free, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                    .map_err(built)
             }
         }
         System::PlanarBodySe2(p) => {
@@ -138,16 +205,18 @@ pub fn build(
                 .map_err(built)?;
             let g0 = reconstruct.then(|| Se2::new(So2::from_angle(p.angle), p.position));
             if system.has_potential() {
-                b.build(body, p.momentum, g0).map_err(built)
+                job.run(body, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                    .map_err(built)
             } else {
                 let free = WithCasimir::<Se2, _> {
                     inner: body,
                     casimir: |mu: &Vector3<f64>| mu[1] * mu[1] + mu[2] * mu[2],
                 };
-                b.build(free, p.momentum, g0).map_err(built)
+                job.run(free, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                    .map_err(built)
             }
         }
-        System::GeodesicSoN(p) => so_n(&b, p, reconstruct).map_err(|e| match e {
+        System::GeodesicSoN(p) => so_n(&b, p, reconstruct, job).map_err(|e| match e {
             SoNError::Size => unavailable(&format!(
                 "SO({}) is not compiled into lie-sim (sizes: {SO_N_SIZES:?})",
                 p.n
@@ -161,6 +230,58 @@ pub fn build(
 /// The n of SO(n) compiled into the binary (one monomorphized integrator per n, method and τ).
 pub const SO_N_SIZES: [usize; 8] = [3, 4, 5, 6, 8, 10, 20, 50];
 
+/// Any integrator of the integrators crate on the group G, boxed: the type the scene's
+/// (method, τ, composition) is erased to, so that one generic code path runs them all.
+pub struct Boxed<G: LieGroup>(Box<dyn Integrator<Group = G>>);
+
+impl<G: LieGroup> Boxed<G> {
+    fn new<I: Integrator<Group = G> + 'static>(i: I) -> Self {
+        Self(Box::new(i))
+    }
+}
+
+impl<G: LieGroup> Integrator for Boxed<G> {
+    type Group = G;
+    fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
+        self.0.step(h)
+    }
+    fn time(&self) -> f64 {
+        self.0.time()
+    }
+    fn momentum(&self) -> G::Algebra {
+        self.0.momentum()
+    }
+    fn velocity(&self) -> G::Algebra {
+        self.0.velocity()
+    }
+    fn configuration(&self) -> Option<&G> {
+        self.0.configuration()
+    }
+    fn energy(&self) -> f64 {
+        self.0.energy()
+    }
+    fn casimir(&self) -> Option<f64> {
+        self.0.casimir()
+    }
+    fn method_name(&self) -> String {
+        self.0.method_name()
+    }
+}
+
+/// `inner`, or `inner` composed with `scheme` (which refuses a base that is not symmetric).
+fn composed<I>(
+    inner: I,
+    scheme: &Option<CompositionScheme>,
+) -> Result<Boxed<I::Group>, IntegratorError>
+where
+    I: SymmetricMethod + StateSnapshot + 'static,
+{
+    Ok(match scheme {
+        None => Boxed::new(inner),
+        Some(s) => Boxed::new(Composition::new(inner, s.clone())?),
+    })
+}
+
 /// Builds integrators of one method spec for any group with a Cayley map.
 struct Builder {
     method: MethodSpec,
@@ -168,58 +289,148 @@ struct Builder {
 }
 
 impl Builder {
-    /// Lie–Poisson, Euler–Poincaré (τ = exp or cayley) or RKMK4 on any group. RK4 is refused here
-    /// ([`build`] routes it to [`Builder::build_so3`] and refuses it on other groups before).
-    fn build<G, S>(
+    /// Lie–Poisson, Euler–Poincaré, Euler–Arnold (τ = exp or cayley, optionally composed) or
+    /// RKMK4 on any group. RK4 is refused here ([`dispatch`] routes it to [`Builder::make_so3`]
+    /// and refuses it on other groups before).
+    fn make<G, S>(
         &self,
         system: S,
         mu0: G::Algebra,
         g0: Option<G>,
-    ) -> Result<Box<dyn Simulation>, IntegratorError>
+    ) -> Result<Boxed<G>, IntegratorError>
     where
-        G: CayleyGroup,
+        G: CayleyGroup + 'static,
         S: integrators::System<G> + 'static,
     {
         let theta = self.method.theta.unwrap_or(0.0);
         let c = self.config;
-        Ok(match (self.method.method, self.method.tau) {
-            (Method::Rkmk4, _) => Box::new(Adapter(Rkmk4::<G, S>::new(system, mu0, g0)?)),
-            (Method::EulerPoincare, Some(TauKind::Exp)) => Box::new(Adapter(
+        let comp = &self.method.composition;
+        match (self.method.method, self.method.tau) {
+            (Method::Rkmk4, _) => Ok(Boxed::new(Rkmk4::<G, S>::new(system, mu0, g0)?)),
+            (Method::EulerPoincare, Some(TauKind::Exp)) => composed(
                 EulerPoincare::<G, ExpMap, S>::from_momentum(system, theta, mu0, g0)?
                     .with_solver(c),
-            )),
-            (Method::EulerPoincare, _) => Box::new(Adapter(
+                comp,
+            ),
+            (Method::EulerPoincare, _) => composed(
                 EulerPoincare::<G, Cayley, S>::from_momentum(system, theta, mu0, g0)?
                     .with_solver(c),
-            )),
-            (Method::LiePoisson, Some(TauKind::Exp)) => Box::new(Adapter(
+                comp,
+            ),
+            (Method::LiePoisson, Some(TauKind::Exp)) => composed(
                 LiePoisson::<G, ExpMap, S>::new(system, theta, mu0, g0)?.with_solver(c),
-            )),
-            (Method::LiePoisson, _) => Box::new(Adapter(
+                comp,
+            ),
+            (Method::LiePoisson, _) => composed(
                 LiePoisson::<G, Cayley, S>::new(system, theta, mu0, g0)?.with_solver(c),
-            )),
-            (Method::Rk4 | Method::EulerArnold, _) => {
-                return Err(IntegratorError::InvalidParameter {
-                    reason: format!("{} is not built on {}", self.method.method, G::name()),
-                })
+                comp,
+            ),
+            (Method::EulerArnold, tau) => {
+                let ea = EulerArnoldOf::new(system, &mu0)?;
+                match tau {
+                    Some(TauKind::Exp) => composed(
+                        EulerPoincare::<G, ExpMap, _>::from_momentum(ea, theta, mu0, g0)?
+                            .with_solver(c),
+                        comp,
+                    ),
+                    _ => composed(
+                        EulerPoincare::<G, Cayley, _>::from_momentum(ea, theta, mu0, g0)?
+                            .with_solver(c),
+                        comp,
+                    ),
+                }
             }
-        })
+            (Method::Rk4, _) => Err(IntegratorError::InvalidParameter {
+                reason: format!("{} is not built on {}", self.method.method, G::name()),
+            }),
+        }
     }
 
-    /// As [`Builder::build`], plus RK4 on (quaternion, Π) for systems on SO(3).
-    fn build_so3<S>(
+    /// As [`Builder::make`], plus RK4 on (quaternion, Π) for systems on SO(3).
+    fn make_so3<S>(
         &self,
         system: S,
         mu0: Vector3<f64>,
         g0: Option<So3>,
-    ) -> Result<Box<dyn Simulation>, IntegratorError>
+    ) -> Result<Boxed<So3>, IntegratorError>
     where
         S: integrators::System<So3> + 'static,
     {
         match self.method.method {
-            Method::Rk4 => Ok(Box::new(Adapter(QuaternionRk4::new(system, mu0, g0)?))),
-            _ => self.build(system, mu0, g0),
+            Method::Rk4 => Ok(Boxed::new(QuaternionRk4::new(system, mu0, g0)?)),
+            _ => self.make(system, mu0, g0),
         }
+    }
+}
+
+/// The Euler–Arnold system of a purely kinetic system S: l(ξ) = ½⟨𝕀ξ, ξ⟩ with
+/// 𝕀 = (∂²h/∂μ²)⁻¹ (constant for the quadratic h(μ) = ½⟨μ, 𝕀⁻¹μ⟩ of the free rigid body, the free
+/// SE(3) and SE(2) bodies and the SO(n) geodesics), symmetrised as ½(𝕀 + 𝕀ᵀ) against the
+/// rounding of the inversion. The dynamics are `integrators::EulerArnold`'s; the Casimir
+/// monitored is S's (it depends on μ only), so that `euler-arnold` runs report it like the others.
+#[derive(Debug, Clone)]
+pub struct EulerArnoldOf<G: LieGroup, S> {
+    ea: EulerArnold<G>,
+    original: S,
+}
+
+/// Relative agreement required between S's h and the Euler–Arnold h at the probe momenta: a
+/// quadratic h agrees to a few ulps (the only rounding is the inversion of a well-conditioned
+/// inertia), a non-quadratic one (or one with a hidden potential term in h) by far more.
+const EULER_ARNOLD_AGREEMENT: f64 = 1e-10;
+
+impl<G: LieGroup, S: integrators::System<G>> EulerArnoldOf<G, S> {
+    /// Builds 𝕀 from S's Hessian at μ₀ and checks that h_S(μ) = ½⟨μ, 𝕀⁻¹μ⟩ at μ₀ and at
+    /// μ = (1, …, 1), to [`EULER_ARNOLD_AGREEMENT`] relative.
+    pub fn new(original: S, mu0: &G::Algebra) -> Result<Self, IntegratorError> {
+        if original.has_potential() {
+            return Err(IntegratorError::InvalidParameter {
+                reason: "Euler–Arnold needs a purely kinetic Lagrangian: the system has a \
+                         potential V(g)"
+                    .into(),
+            });
+        }
+        let inv = original.hessian(mu0).try_inverse().ok_or_else(|| {
+            IntegratorError::InvalidParameter {
+                reason: "the Hessian ∂²h/∂μ² is singular: no inertia operator".into(),
+            }
+        })?;
+        let inertia = inv.add(&inv.transpose()).scale(0.5);
+        let ea = EulerArnold::<G>::new(inertia)?;
+        let ones = G::Algebra::from_fn(G::dim(), |_| 1.0);
+        for mu in [mu0, &ones] {
+            let (a, b) = (
+                integrators::System::<G>::hamiltonian(&ea, mu),
+                original.hamiltonian(mu),
+            );
+            if (a - b).abs() > EULER_ARNOLD_AGREEMENT * b.abs() {
+                return Err(IntegratorError::InvalidParameter {
+                    reason: format!(
+                        "Euler–Arnold needs a quadratic kinetic energy: h(μ) = {b} but \
+                         ½⟨μ, 𝕀⁻¹μ⟩ = {a}"
+                    ),
+                });
+            }
+        }
+        Ok(Self { ea, original })
+    }
+}
+
+impl<G: LieGroup, S: integrators::System<G>> integrators::System<G> for EulerArnoldOf<G, S> {
+    fn hamiltonian(&self, mu: &G::Algebra) -> f64 {
+        self.ea.hamiltonian(mu)
+    }
+    fn velocity(&self, mu: &G::Algebra) -> G::Algebra {
+        self.ea.velocity(mu)
+    }
+    fn hessian(&self, mu: &G::Algebra) -> G::Operator {
+        self.ea.hessian(mu)
+    }
+    fn momentum(&self, xi: &G::Algebra) -> G::Algebra {
+        self.ea.momentum(xi)
+    }
+    fn casimir(&self, mu: &G::Algebra) -> Option<f64> {
+        self.original.casimir(mu)
     }
 }
 
@@ -229,12 +440,18 @@ enum SoNError {
     Lie(LieError),
 }
 
-fn so_n(b: &Builder, p: &GeodesicSoN, reconstruct: bool) -> Result<Box<dyn Simulation>, SoNError> {
-    fn go<const N: usize>(
+fn so_n<J: Job>(
+    b: &Builder,
+    p: &GeodesicSoN,
+    reconstruct: bool,
+    job: J,
+) -> Result<J::Out, SoNError> {
+    fn go<const N: usize, J: Job>(
         b: &Builder,
         p: &GeodesicSoN,
         reconstruct: bool,
-    ) -> Result<Box<dyn Simulation>, SoNError> {
+        job: J,
+    ) -> Result<J::Out, SoNError> {
         let body = GeneralizedRigidBody::<N>::new(&p.inertia).map_err(SoNError::Integrator)?;
         let mu0 = Col::from_fn(p.momentum.len(), |i| p.momentum[i]);
         let g0 = if reconstruct {
@@ -243,18 +460,18 @@ fn so_n(b: &Builder, p: &GeodesicSoN, reconstruct: bool) -> Result<Box<dyn Simul
         } else {
             None
         };
-        b.build::<SoN<N>, _>(body, mu0, g0)
+        job.run::<SoN<N>, _, _>(body, mu0, g0, |s, mu, g| b.make(s, mu, g))
             .map_err(SoNError::Integrator)
     }
     match p.n {
-        3 => go::<3>(b, p, reconstruct),
-        4 => go::<4>(b, p, reconstruct),
-        5 => go::<5>(b, p, reconstruct),
-        6 => go::<6>(b, p, reconstruct),
-        8 => go::<8>(b, p, reconstruct),
-        10 => go::<10>(b, p, reconstruct),
-        20 => go::<20>(b, p, reconstruct),
-        50 => go::<50>(b, p, reconstruct),
+        3 => go::<3, J>(b, p, reconstruct, job),
+        4 => go::<4, J>(b, p, reconstruct, job),
+        5 => go::<5, J>(b, p, reconstruct, job),
+        6 => go::<6, J>(b, p, reconstruct, job),
+        8 => go::<8, J>(b, p, reconstruct, job),
+        10 => go::<10, J>(b, p, reconstruct, job),
+        20 => go::<20, J>(b, p, reconstruct, job),
+        50 => go::<50, J>(b, p, reconstruct, job),
         _ => Err(SoNError::Size),
     }
 }

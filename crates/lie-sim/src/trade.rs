@@ -1,10 +1,12 @@
 //! `lie-sim trade`: the speed–accuracy trade of every method that applies to a scene.
 //!
-//! Every candidate method (each Lie integrator × τ ∈ {exp, cayley} × θ ∈ {0, ½, 1}, plus rk4 and
-//! rkmk4) runs the scene over a ladder of steps h₀, h₀/2, …, h₀/2^{L−1} (h₀ the scene's step). Each
-//! run is compared at the final time T with a reference solution: the most accurate method the
-//! integrators crate provides for the system, at a step 16 times smaller than the finest of the
-//! ladder (see [`reference`]). The table reports, per run, the cost (ns per step, total time),
+//! Every candidate method (each Lie integrator × τ ∈ {exp, cayley} × θ ∈ {0, ½, 1}, the
+//! compositions [`COMPOSITIONS`] of the θ = ½ Lie–Poisson method for each τ, plus rk4 and rkmk4)
+//! runs the scene over a ladder of steps h₀, h₀/2, …, h₀/2^{L−1} (h₀ the scene's step); a
+//! composite step of size h is s base steps. Methods that do not apply to the system (euler-arnold
+//! with a potential, rk4 off SO(3)) are left out. Each run is compared at the final time T with a
+//! reference solution: the order-8 composition at a step smaller than the finest of the ladder
+//! (see [`reference`]). The table reports, per run, the cost (ns per step, total time),
 //! the error at T and the maximum relative energy error.
 //!
 //! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
@@ -18,21 +20,13 @@ use crate::plot::{plot_loglog, Curve};
 use crate::run::relative_error;
 use crate::scene::{steps_for, Method, MethodSpec, Scene, TauKind};
 use crate::sim::{build, Simulation};
+use integrators::CompositionScheme;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
 /// Steps between two energy samples (and two clock reads) in a timed run.
 pub const ENERGY_SAMPLE: u64 = 8;
-
-/// An order-4 reference (rk4, rkmk4) runs at the finest step of the ladder divided by this: its
-/// error is then 4⁴ = 256 times below rk4's own at the finest step, while a finer step would only
-/// add round-off, which over long horizons near a separatrix is amplified to the same level.
-pub const REFERENCE_REFINEMENT_ORDER4: f64 = 4.0;
-
-/// The Richardson-extrapolated θ = ½ reference (used where no order-4 method exists) runs at the
-/// finest step divided by this.
-pub const REFERENCE_REFINEMENT_RICHARDSON: f64 = 16.0;
 
 /// Rows whose error is below this multiple of the reference's estimated error measure the
 /// reference, not the method: they are left out of the order fit.
@@ -42,8 +36,25 @@ pub const ORDER_FIT_REFERENCE_MARGIN: f64 = 10.0;
 /// saturates): they are left out of the order fit.
 pub const ORDER_FIT_MAX_ERROR: f64 = 0.1;
 
+/// The order-8 reference (Kahan–Li's 17-stage composition of the θ = ½ Lie–Poisson method with
+/// τ = cayley) runs at the finest step of the ladder divided by this: its error is then 2⁸ = 256
+/// times below its own at the finest step, which is already below every other method's there.
+pub const REFERENCE_REFINEMENT_ORDER8: f64 = 2.0;
+
 /// The θ values swept for each Lie method.
 pub const THETAS: [f64; 3] = [0.0, 0.5, 1.0];
+
+/// The composition schemes of the trade, each on the θ = ½ Lie–Poisson method with τ = exp and
+/// τ = cayley: the cheapest order 4 (3 stages) and the optimised order-6 (9 stages) and order-8
+/// (17 stages) schemes, so that the plot shows where each order starts to pay for its stages.
+pub const COMPOSITIONS: [&str; 3] = ["triple-jump-4", "kahan-li-6", "kahan-li-8"];
+
+fn scheme(name: &str) -> CompositionScheme {
+    // The names above are built-in schemes of the integrators crate (unit test
+    // `trade_compositions_are_builtin_schemes`).
+    name.parse()
+        .unwrap_or_else(|_| CompositionScheme::kahan_li_8())
+}
 
 /// Every method the trade tries, in table order.
 pub fn candidates() -> Vec<MethodSpec> {
@@ -59,20 +70,23 @@ pub fn candidates() -> Vec<MethodSpec> {
                     method,
                     tau: Some(tau),
                     theta: Some(theta),
+                    composition: None,
                 });
             }
         }
     }
-    v.push(MethodSpec {
-        method: Method::Rk4,
-        tau: None,
-        theta: None,
-    });
-    v.push(MethodSpec {
-        method: Method::Rkmk4,
-        tau: Some(TauKind::Exp),
-        theta: None,
-    });
+    for name in COMPOSITIONS {
+        for tau in [TauKind::Exp, TauKind::Cayley] {
+            v.push(MethodSpec {
+                method: Method::LiePoisson,
+                tau: Some(tau),
+                theta: Some(0.5),
+                composition: Some(scheme(name)),
+            });
+        }
+    }
+    v.push(MethodSpec::plain(Method::Rk4, None));
+    v.push(MethodSpec::plain(Method::Rkmk4, Some(TauKind::Exp)));
     v
 }
 
@@ -176,68 +190,29 @@ pub struct Reference {
     pub estimated_error: f64,
 }
 
-/// The reference at T: the first available of rk4 and rkmk4 (τ = exp) at
-/// `h_min` / [`REFERENCE_REFINEMENT_ORDER4`], else the θ = ½ Lie–Poisson method with τ = cayley
-/// extrapolated by Richardson at `h_min` / [`REFERENCE_REFINEMENT_RICHARDSON`] (its error expansion
-/// is in even powers of h because the method is symmetric, so (4 x_{h/2} − x_h)/3 is of order 4).
+/// The reference at T: Kahan–Li's order-8 composition of the θ = ½ Lie–Poisson method with
+/// τ = cayley (available for every system) at `h_min` / [`REFERENCE_REFINEMENT_ORDER8`]; its
+/// error is estimated by the same method at twice that step. Order 8 keeps the reference's error
+/// below that of every method of the ladder at its finest step, including the order-6 and order-8
+/// compositions, whose errors a fourth-order reference could not resolve.
 pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
-    let h_ref = h_min / REFERENCE_REFINEMENT_ORDER4;
-    let order4 = [
-        MethodSpec {
-            method: Method::Rk4,
-            tau: None,
-            theta: None,
-        },
-        MethodSpec {
-            method: Method::Rkmk4,
-            tau: Some(TauKind::Exp),
-            theta: None,
-        },
-    ];
-    let run = |m: &MethodSpec, h: f64| -> Result<FinalState, SimError> {
-        let mut sim = build(&scene.system, m, scene.reconstruct, &scene.solver)?;
-        Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
-    };
-    for m in &order4 {
-        match run(m, h_ref) {
-            Ok(fine) => {
-                let coarse = run(m, 2.0 * h_ref)?;
-                return Ok(Reference {
-                    estimated_error: coarse.error(&fine),
-                    state: fine,
-                    description: format!("{m} at h = {h_ref:.3e}"),
-                });
-            }
-            Err(SimError::NotYetAvailable { .. }) => continue,
-            Err(e) => return Err(e),
-        }
-    }
-    let sym = MethodSpec {
+    let h_ref = h_min / REFERENCE_REFINEMENT_ORDER8;
+    let m = MethodSpec {
         method: Method::LiePoisson,
         tau: Some(TauKind::Cayley),
         theta: Some(0.5),
+        composition: Some(CompositionScheme::kahan_li_8()),
     };
-    let richardson = |h: f64| -> Result<FinalState, SimError> {
-        let coarse = run(&sym, h)?;
-        let fine = run(&sym, h / 2.0)?;
-        let ex = |a: &[f64], b: &[f64]| -> Vec<f64> {
-            b.iter().zip(a).map(|(f, c)| (4.0 * f - c) / 3.0).collect()
-        };
-        Ok(FinalState {
-            momentum: ex(&coarse.momentum, &fine.momentum),
-            group: match (&coarse.group, &fine.group) {
-                (Some(c), Some(f)) => Some(ex(c, f)),
-                _ => None,
-            },
-        })
+    let run = |h: f64| -> Result<FinalState, SimError> {
+        let mut sim = build(&scene.system, &m, scene.reconstruct, &scene.solver)?;
+        Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
     };
-    let h_ref = h_min / REFERENCE_REFINEMENT_RICHARDSON;
-    let fine = richardson(h_ref)?;
-    let coarse = richardson(2.0 * h_ref)?;
+    let fine = run(h_ref)?;
+    let coarse = run(2.0 * h_ref)?;
     Ok(Reference {
         estimated_error: coarse.error(&fine),
         state: fine,
-        description: format!("{sym} with Richardson extrapolation from h = {h_ref:.3e}"),
+        description: format!("{m} at h = {h_ref:.3e}"),
     })
 }
 
@@ -271,6 +246,8 @@ pub struct TradeReport {
     pub reference: Reference,
     /// Methods the integrators crate does not provide for this system.
     pub unavailable: Vec<MethodSpec>,
+    /// Methods that do not apply to this system (euler-arnold with a potential).
+    pub inapplicable: Vec<MethodSpec>,
 }
 
 /// Runs the trade over `levels` step sizes; each run is repeated `repeats` times from the same
@@ -290,6 +267,7 @@ pub fn trade(
     let reference = reference(scene, h_min)?;
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
+    let mut inapplicable = Vec::new();
     for m in candidates() {
         for &h in &ladder {
             let mut best: Option<Result<Timed, SimError>> = None;
@@ -297,6 +275,10 @@ pub fn trade(
                 let mut sim = match build(&scene.system, &m, scene.reconstruct, &scene.solver) {
                     Ok(s) => s,
                     Err(SimError::NotYetAvailable { .. }) => break,
+                    Err(SimError::Inapplicable { .. }) => {
+                        inapplicable.push(m.clone());
+                        break;
+                    }
                     Err(e) => return Err(e),
                 };
                 let t = timed_run(sim.as_mut(), scene.duration, h);
@@ -309,12 +291,14 @@ pub fn trade(
                 }
             }
             let Some(result) = best else {
-                unavailable.push(m);
+                if inapplicable.last() != Some(&m) {
+                    unavailable.push(m.clone());
+                }
                 break;
             };
             let row = match result {
                 Ok(t) => TradeRow {
-                    method: m,
+                    method: m.clone(),
                     h,
                     steps: t.steps,
                     ns_per_step: t.stepping.as_nanos() as f64 / t.steps as f64,
@@ -324,7 +308,7 @@ pub fn trade(
                     failure: None,
                 },
                 Err(e) => TradeRow {
-                    method: m,
+                    method: m.clone(),
                     h,
                     steps: 0,
                     ns_per_step: f64::NAN,
@@ -342,6 +326,7 @@ pub fn trade(
         rows,
         reference,
         unavailable,
+        inapplicable,
     })
 }
 
@@ -372,18 +357,19 @@ pub fn fitted_order(rows: &[&TradeRow], reference_error: f64) -> Option<f64> {
 /// Table header, fixed width.
 pub fn table_header() -> String {
     format!(
-        "{:<15} {:>6} {:>5} {:>10} {:>10} {:>11} {:>11} {:>11}",
-        "method", "tau", "theta", "h", "steps", "ns/step", "error(T)", "max|dE/E|"
+        "{:<15} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11}",
+        "method", "tau", "theta", "composition", "h", "steps", "ns/step", "error(T)", "max|dE/E|"
     )
 }
 
 /// One table line.
 pub fn table_line(r: &TradeRow) -> String {
     let head = format!(
-        "{:<15} {:>6} {:>5} {:>10.3e}",
+        "{:<15} {:>6} {:>5} {:>13} {:>10.3e}",
         r.method.method.name(),
         r.method.tau_label(),
         r.method.theta_label(),
+        r.method.composition_label(),
         r.h
     );
     match &r.failure {
@@ -398,15 +384,16 @@ pub fn table_line(r: &TradeRow) -> String {
 /// The rows as CSV.
 pub fn to_csv(rows: &[TradeRow]) -> String {
     let mut s = String::from(
-        "method,tau,theta,h,steps,ns_per_step,seconds,error,max_energy_error,failure\n",
+        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,failure\n",
     );
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             r.method.method.name(),
             r.method.tau_label(),
             r.method.theta_label(),
+            r.method.composition_label(),
             r.h,
             r.steps,
             r.ns_per_step,
@@ -425,7 +412,7 @@ pub fn by_method(rows: &[TradeRow]) -> Vec<(MethodSpec, Vec<&TradeRow>)> {
     for r in rows {
         match groups.iter_mut().find(|(m, _)| *m == r.method) {
             Some((_, v)) => v.push(r),
-            None => groups.push((r.method, vec![r])),
+            None => groups.push((r.method.clone(), vec![r])),
         }
     }
     groups
@@ -443,7 +430,10 @@ pub fn write_outputs(
         .into_iter()
         .map(|(m, rows)| Curve {
             label: format!(
-                "{} {}{}",
+                "{}{} {}{}",
+                m.composition
+                    .as_ref()
+                    .map_or(String::new(), |c| format!("{} ∘ ", c.name())),
                 m.method.name(),
                 m.tau.map_or(String::new(), |t| t.name().to_string()),
                 m.theta.map_or(String::new(), |t| format!(" θ={t}"))
@@ -475,7 +465,7 @@ mod tests {
 
     fn row(h: f64, error: f64) -> TradeRow {
         TradeRow {
-            method: candidates()[0],
+            method: candidates()[0].clone(),
             h,
             steps: 1,
             ns_per_step: 1.0,
@@ -512,9 +502,25 @@ mod tests {
     }
 
     #[test]
-    fn candidates_cover_every_lie_method_tau_theta_and_the_baselines() {
-        // 3 methods × 2 τ × 3 θ + rk4 + rkmk4.
-        assert_eq!(candidates().len(), 20);
+    fn candidates_cover_every_lie_method_tau_theta_the_compositions_and_the_baselines() {
+        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + rk4 + rkmk4.
+        assert_eq!(candidates().len(), 26);
+        let composed: Vec<_> = candidates()
+            .into_iter()
+            .filter(|m| m.composition.is_some())
+            .collect();
+        assert_eq!(composed.len(), 6);
+        assert!(composed
+            .iter()
+            .all(|m| m.method == Method::LiePoisson && m.theta == Some(0.5)));
+    }
+
+    #[test]
+    fn trade_compositions_are_builtin_schemes() {
+        for name in COMPOSITIONS {
+            let s: CompositionScheme = name.parse().unwrap();
+            assert_eq!(s.name(), name);
+        }
     }
 
     #[test]
