@@ -14,6 +14,14 @@
 //!
 //! The scene format is documented in [`scene`]; examples live in `examples/scenes/`.
 
+/// `println!` to stdout that ignores a closed pipe (`lie-sim run … | head`) instead of panicking.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+
 mod error;
 mod output;
 mod plot;
@@ -208,20 +216,20 @@ fn cmd_run(
     };
 
     let m = &scene.method;
-    println!("lie-sim: {} ({})", scene.name, scene.source);
-    println!("  system       {}", scene.system.kind());
-    println!("  method       {}", m.method);
-    println!("  tau          {}", m.tau_label());
-    println!("  theta        {}", m.theta_label());
+    say!("lie-sim: {} ({})", scene.name, scene.source);
+    say!("  system       {}", scene.system.kind());
+    say!("  method       {}", m.method);
+    say!("  tau          {}", m.tau_label());
+    say!("  theta        {}", m.theta_label());
     if let Some(c) = &m.composition {
-        println!(
+        say!(
             "  composition  {} (order {} from {} steps of the θ = ½ method per step)",
             c.name(),
             c.order(),
             c.stages()
         );
     }
-    println!(
+    say!(
         "  steps        {} × h = {} to T = {}{}",
         summary.steps,
         scene.step,
@@ -232,29 +240,29 @@ fn cmd_run(
             " (momentum only, no reconstruction)"
         }
     );
-    println!(
+    say!(
         "  wall time    {} ({:.0} ns per step, output included)",
         human_duration(summary.wall),
         summary.wall.as_nanos() as f64 / summary.steps as f64
     );
-    println!(
+    say!(
         "  energy       max |E − E₀|/|E₀| = {:.3e}",
         summary.max_energy_error
     );
     match summary.max_casimir_error {
-        Some(c) => println!("  casimir      max |C − C₀|/|C₀| = {c:.3e}"),
-        None => println!(
+        Some(c) => say!("  casimir      max |C − C₀|/|C₀| = {c:.3e}"),
+        None => say!(
             "  casimir      (none monitored for this {})",
             scene.system.kind()
         ),
     }
-    println!(
+    say!(
         "  trajectory   {} ({} rows)",
         summary.out.display(),
         summary.rows
     );
     if let Some(p) = plotted {
-        println!("  plot         {}", p.display());
+        say!("  plot         {}", p.display());
     }
     Ok(())
 }
@@ -266,7 +274,7 @@ fn cmd_plot(csv: &Path, out: Option<PathBuf>) -> Result<(), SimError> {
         .file_stem()
         .map_or_else(|| "trajectory".into(), |s| s.to_string_lossy().into_owned());
     plot::plot_trajectory(&traj, &out, &title)?;
-    println!(
+    say!(
         "lie-sim: plotted {} ({} rows) to {}",
         csv.display(),
         traj.rows(),
@@ -286,7 +294,7 @@ fn cmd_trade(
     let (scene, stem) = load(scene_path, overrides)?;
     let csv = out.unwrap_or_else(|| default_path(&stem, "-trade.csv"));
     let svg = plot_path.unwrap_or_else(|| csv.with_extension("svg"));
-    println!(
+    say!(
         "lie-sim trade: {} ({}), T = {}, h = {} … {}",
         scene.name,
         scene.system.kind(),
@@ -294,15 +302,15 @@ fn cmd_trade(
         scene.step,
         scene.step / f64::powi(2.0, levels as i32 - 1)
     );
-    println!("{}", trade::table_header());
+    say!("{}", trade::table_header());
     let report = trade::trade(&scene, levels as usize, repeats as usize, |r| {
-        println!("{}", trade::table_line(r))
+        say!("{}", trade::table_line(r))
     })?;
-    println!(
+    say!(
         "reference: {} (estimated error {:.1e})",
         report.reference.description, report.reference.estimated_error
     );
-    println!(
+    say!(
         "observed orders (slope of log error against log h, over errors between {:.0} × the \
          reference's and {}):",
         trade::ORDER_FIT_REFERENCE_MARGIN,
@@ -310,8 +318,8 @@ fn cmd_trade(
     );
     for (m, rows) in trade::by_method(&report.rows) {
         match trade::fitted_order(&rows, report.reference.estimated_error) {
-            Some(p) => println!("  {:<52} {p:.2}", m.to_string()),
-            None => println!("  {:<52} -", m.to_string()),
+            Some(p) => say!("  {:<52} {p:.2}", m.to_string()),
+            None => say!("  {:<52} -", m.to_string()),
         }
     }
     if !report.inapplicable.is_empty() {
@@ -321,7 +329,7 @@ fn cmd_trade(
             .map(|m| m.method.name())
             .collect();
         names.dedup();
-        println!(
+        say!(
             "not applicable to {}: {} (needs a purely kinetic Lagrangian)",
             scene.system.kind(),
             names.join(", ")
@@ -329,7 +337,7 @@ fn cmd_trade(
     }
     if !report.unavailable.is_empty() {
         let names: Vec<String> = report.unavailable.iter().map(|m| m.to_string()).collect();
-        println!("not yet available: {}", names.join(", "));
+        say!("not yet available: {}", names.join(", "));
     }
     if report.rows.is_empty() {
         return Err(SimError::NotYetAvailable {
@@ -338,7 +346,7 @@ fn cmd_trade(
         });
     }
     trade::write_outputs(&report, &scene, &csv, &svg)?;
-    println!("table: {}\nplot:  {}", csv.display(), svg.display());
+    say!("table: {}\nplot:  {}", csv.display(), svg.display());
     Ok(())
 }
 
@@ -372,17 +380,17 @@ fn cmd_sweep(
     sweep::write(&out, &sweep::to_csv(&result, spec.count, shard, fp))?;
 
     let k = result.rows.len();
-    println!("lie-sim sweep: {} ({})", scene.name, scene.source);
-    println!("  system       {}", scene.system.kind());
-    println!("  method       {}", scene.method);
-    println!(
+    say!("lie-sim sweep: {} ({})", scene.name, scene.source);
+    say!("  system       {}", scene.system.kind());
+    say!("  method       {}", scene.method);
+    say!(
         "  members      {} {} (seed {}); shard {shard} (0-based): {k} trajectories",
         spec.count,
         spec.kind.name(),
         spec.seed
     );
-    println!("  steps        {steps} × h = {h} to T = {}", scene.duration);
-    println!(
+    say!("  steps        {steps} × h = {h} to T = {}", scene.duration);
+    say!(
         "  threads      {}",
         match threads {
             Some(1) => "1 (sequential)".to_string(),
@@ -390,30 +398,30 @@ fn cmd_sweep(
             None => format!("{} (one per core)", rayon::current_num_threads()),
         }
     );
-    println!(
+    say!(
         "  wall time    {} ({:.1} trajectories/s)",
         human_duration(wall),
         k as f64 / wall.as_secs_f64().max(1e-9)
     );
-    println!("  completed    {} / {k}", result.completed);
+    say!("  completed    {} / {k}", result.completed);
     if let Some(f) = &result.first_failure {
-        println!("  first failure {f}");
+        say!("  first failure {f}");
     }
-    println!(
+    say!(
         "  energy       max |E − E₀| = {:.3e} (over completed trajectories)",
         result.max_energy_error
     );
     if let Some(c) = result.max_casimir_error {
-        println!("  casimir      max |C − C₀| = {c:.3e}");
+        say!("  casimir      max |C − C₀| = {c:.3e}");
     }
-    println!("  summary      {} ({k} rows)", out.display());
+    say!("  summary      {} ({k} rows)", out.display());
     Ok(())
 }
 
 fn cmd_merge(shards: &[PathBuf], out: &Path) -> Result<(), SimError> {
     let (text, files, members) = sweep::merge(shards)?;
     sweep::write(out, &text)?;
-    println!(
+    say!(
         "lie-sim merge: {files} shard files, {members} members, to {}",
         out.display()
     );
@@ -459,7 +467,10 @@ fn main() -> ExitCode {
         }) => cmd_sweep(&scene, out, shard, threads, count, seed, overrides),
         Some(Command::Merge { shards, out }) => cmd_merge(&shards, &out),
         Some(Command::DefaultScene) => {
-            print!("{}", scene::DEFAULT_SCENE);
+            {
+                use std::io::Write as _;
+                let _ = write!(std::io::stdout(), "{}", scene::DEFAULT_SCENE);
+            }
             Ok(())
         }
     };
