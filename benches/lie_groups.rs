@@ -1,12 +1,20 @@
 //! Micro-benchmarks of the SO(3) and SE(3) closed forms, with nalgebra's geometry types as the
 //! comparison rows in the same groups (UnitQuaternion, Rotation3, Isometry3).
 //!
+//! Like with like: `So3` stores a 3×3 matrix, so its natural peer is `Rotation3` (also a 3×3
+//! matrix); `UnitQuaternion` stores 4 numbers, so e.g. its inverse (a conjugate: 3 sign flips) moves
+//! less than half the data of any matrix transpose. Every SO(3) operation is timed against both.
+//! `Se3` (matrix + translation) is timed against `Isometry3` (quaternion + translation).
+//! Every row passes its operands the same way, through `black_box(&x)` (by reference), so no row
+//! pays for copying its inputs through `black_box` by value.
+//!
 //! Run: `cargo bench --bench lie_groups` (add `-- --quick` for a smoke run). `black_box` is
 //! `std::hint::black_box` (criterion 0.8 deprecates its own re-export).
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use lie_groups::Action;
 use lie_groups::{CayleyGroup, LieGroup, Se3, So3};
-use nalgebra::{Isometry3, Rotation3, UnitQuaternion, Vector3, Vector6};
+use nalgebra::{Isometry3, Point3, Rotation3, UnitQuaternion, Vector3, Vector6};
 use std::hint::black_box;
 
 fn so3(c: &mut Criterion) {
@@ -25,31 +33,40 @@ fn so3(c: &mut Criterion) {
     let mut g = c.benchmark_group("so3/compose");
     g.bench_function("So3", |b| b.iter(|| black_box(&r).compose(black_box(&s))));
     g.bench_function("UnitQuaternion", |b| {
-        b.iter(|| black_box(q) * black_box(q2))
+        b.iter(|| black_box(&q) * black_box(&q2))
     });
-    g.bench_function("Rotation3", |b| b.iter(|| black_box(m) * black_box(m2)));
+    g.bench_function("Rotation3", |b| b.iter(|| black_box(&m) * black_box(&m2)));
     g.finish();
 
     let mut g = c.benchmark_group("so3/inverse");
     g.bench_function("So3", |b| b.iter(|| black_box(&r).inverse()));
-    g.bench_function("UnitQuaternion", |b| b.iter(|| black_box(q).inverse()));
-    g.bench_function("Rotation3", |b| b.iter(|| black_box(m).inverse()));
+    g.bench_function("UnitQuaternion", |b| b.iter(|| black_box(&q).inverse()));
+    g.bench_function("Rotation3", |b| b.iter(|| black_box(&m).inverse()));
     g.finish();
 
     let mut g = c.benchmark_group("so3/exp");
     g.bench_function("So3", |b| b.iter(|| So3::exp(black_box(&w))));
     g.bench_function("UnitQuaternion", |b| {
-        b.iter(|| UnitQuaternion::from_scaled_axis(black_box(w)))
+        b.iter(|| UnitQuaternion::from_scaled_axis(*black_box(&w)))
     });
     g.bench_function("Rotation3", |b| {
-        b.iter(|| Rotation3::from_scaled_axis(black_box(w)))
+        b.iter(|| Rotation3::from_scaled_axis(*black_box(&w)))
     });
     g.finish();
 
     let mut g = c.benchmark_group("so3/log");
     g.bench_function("So3", |b| b.iter(|| black_box(&r).log()));
-    g.bench_function("UnitQuaternion", |b| b.iter(|| black_box(q).scaled_axis()));
-    g.bench_function("Rotation3", |b| b.iter(|| black_box(m).scaled_axis()));
+    g.bench_function("UnitQuaternion", |b| b.iter(|| black_box(&q).scaled_axis()));
+    g.bench_function("Rotation3", |b| b.iter(|| black_box(&m).scaled_axis()));
+    g.finish();
+
+    let p = Vector3::new(0.4, -1.2, 2.5);
+    let mut g = c.benchmark_group("so3/act");
+    g.bench_function("So3", |b| b.iter(|| black_box(&r).act(black_box(&p))));
+    g.bench_function("UnitQuaternion", |b| {
+        b.iter(|| black_box(&q) * black_box(&p))
+    });
+    g.bench_function("Rotation3", |b| b.iter(|| black_box(&m) * black_box(&p)));
     g.finish();
 
     let mut g = c.benchmark_group("so3/adjoint");
@@ -75,12 +92,18 @@ fn se3(c: &mut Criterion) {
 
     let mut g = c.benchmark_group("se3/compose");
     g.bench_function("Se3", |b| b.iter(|| black_box(&g1).compose(black_box(&g2))));
-    g.bench_function("Isometry3", |b| b.iter(|| black_box(i1) * black_box(i2)));
+    g.bench_function("Isometry3", |b| b.iter(|| black_box(&i1) * black_box(&i2)));
     g.finish();
 
     let mut g = c.benchmark_group("se3/inverse");
     g.bench_function("Se3", |b| b.iter(|| black_box(&g1).inverse()));
-    g.bench_function("Isometry3", |b| b.iter(|| black_box(i1).inverse()));
+    g.bench_function("Isometry3", |b| b.iter(|| black_box(&i1).inverse()));
+    g.finish();
+
+    let (p, pt) = (Vector3::new(0.4, -1.2, 2.5), Point3::new(0.4, -1.2, 2.5));
+    let mut g = c.benchmark_group("se3/act");
+    g.bench_function("Se3", |b| b.iter(|| black_box(&g1).act(black_box(&p))));
+    g.bench_function("Isometry3", |b| b.iter(|| black_box(&i1) * black_box(&pt)));
     g.finish();
 
     let mut g = c.benchmark_group("se3/exp_log");

@@ -7,7 +7,9 @@
 //! `Ad_g = [[R, 0], [t̂ R, R]]`, `ad_ξ = [[ω̂, 0], [v̂, ω̂]]`.
 //! (Barfoot and manif order (v, ω); their blocks appear here transposed across the diagonal.)
 
-use crate::so3::{cosc, dexp_inv_coeff, sinc3, skew};
+use crate::so3::{
+    dexp_inv_coeff, rodrigues_apply, rodrigues_coeffs, rodrigues_matrix, sinc3, skew,
+};
 use crate::{Action, CayleyGroup, LieError, LieGroup, So3};
 use nalgebra::{Matrix3, Matrix4, Matrix6, Vector3, Vector6};
 
@@ -47,23 +49,6 @@ fn blocks(a: &Matrix3<f64>, b: &Matrix3<f64>, c: &Matrix3<f64>, d: &Matrix3<f64>
     m.fixed_view_mut::<3, 3>(3, 0).copy_from(c);
     m.fixed_view_mut::<3, 3>(3, 3).copy_from(d);
     m
-}
-
-/// The left Jacobian of SO(3), `V(ω) = J_l(ω) = I + ((1 − cos θ)/θ²) ω̂ + ((θ − sin θ)/θ³) ω̂²`:
-/// the translation of exp(ξ) is `V(ω) v`.
-#[inline]
-fn left_jacobian_so3(w: &Vector3<f64>) -> Matrix3<f64> {
-    let t2 = w.norm_squared();
-    let k = skew(w);
-    Matrix3::identity() + k * cosc(t2) + k * k * sinc3(t2)
-}
-
-/// `V(ω)⁻¹ = I − ω̂/2 + (1/θ² − (1 + cos θ)/(2θ sin θ)) ω̂²`.
-#[inline]
-fn left_jacobian_so3_inv(w: &Vector3<f64>) -> Matrix3<f64> {
-    let t2 = w.norm_squared();
-    let k = skew(w);
-    Matrix3::identity() - k * 0.5 + k * k * dexp_inv_coeff(t2)
 }
 
 /// Barfoot's coupling block `Q(ρ, φ)` of the SE(3) left Jacobian (State Estimation for Robotics,
@@ -235,13 +220,23 @@ impl LieGroup for Se3 {
     fn inverse(&self) -> Self {
         Self::from_parts(self.rot.inverse(), -self.rot.as_matrix().tr_mul(&self.t))
     }
-    /// `exp(ω, v) = (exp ω, V(ω) v)` with V the left Jacobian of SO(3) (see [`Se3`] docs).
+    /// `exp(ω, v) = (exp ω, V(ω) v)` with V the left Jacobian of SO(3),
+    /// `V(ω) = I + ((1 − cos θ)/θ²) ω̂ + ((θ − sin θ)/θ³) ω̂²` (Taylor branches below θ = 0.1).
+    ///
+    /// The three coefficients share one `sin_cos(θ)`, and `V v` is applied as
+    /// `v + c₁ ω × v + c₂ ω × (ω × v)` without forming V.
     #[inline]
     fn exp(xi: &Vector6<f64>) -> Self {
         let w = head(xi);
-        Self::from_parts(So3::exp(&w), left_jacobian_so3(&w) * tail(xi))
+        let (a, b, c) = rodrigues_coeffs(w.norm_squared());
+        Self::from_parts(
+            So3::from_matrix_unchecked(&rodrigues_matrix(&w, a, b)),
+            rodrigues_apply(&w, b, c, &tail(xi)),
+        )
     }
-    /// `log(R, t) = (ω, V(ω)⁻¹ t)` with ω = log R (principal, |ω| ≤ π; see [`So3`]'s `log`).
+    /// `log(R, t) = (ω, V(ω)⁻¹ t)` with ω = log R (principal, |ω| ≤ π; see [`So3`]'s `log`) and
+    /// `V(ω)⁻¹ = I − ω̂/2 + (1/θ² − (1 + cos θ)/(2θ sin θ)) ω̂²`, applied with cross products.
+    #[inline]
     fn log(&self) -> Result<Vector6<f64>, LieError> {
         if !self.t.iter().all(|x| x.is_finite()) {
             return Err(LieError::NonFinite {
@@ -249,7 +244,8 @@ impl LieGroup for Se3 {
             });
         }
         let w = self.rot.log()?;
-        Ok(join(&w, &(left_jacobian_so3_inv(&w) * self.t)))
+        let coeff = dexp_inv_coeff(w.norm_squared());
+        Ok(join(&w, &rodrigues_apply(&w, -0.5, coeff, &self.t)))
     }
     /// `ξ̂ = [[ω̂, v], [0, 0]]`.
     #[inline]

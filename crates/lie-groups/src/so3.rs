@@ -69,6 +69,53 @@ pub(crate) fn sinc3(t2: f64) -> f64 {
     }
 }
 
+/// The three Rodrigues coefficients `(sin θ/θ, (1 − cos θ)/θ², (θ − sin θ)/θ³)` from ONE
+/// `sin_cos(θ)` (one `sincos` call instead of the separate `sin θ` and `sin(θ/2)` of [`sinc`],
+/// [`cosc`], [`sinc3`]); below [`SMALL_ANGLE`] the same Taylor series as those three.
+///
+/// `1 − cos θ` is taken as `sin²θ/(1 + cos θ)` when cos θ ≥ 0 (no cancellation near θ = 0) and
+/// as `1 − cos θ` itself when cos θ < 0 (no cancellation, and no 0/0 near θ = π); both are
+/// accurate to a few ulp relative. The unused entries are dropped by the optimiser when inlined.
+#[inline]
+pub(crate) fn rodrigues_coeffs(t2: f64) -> (f64, f64, f64) {
+    if t2 < SMALL_ANGLE_SQ {
+        (sinc(t2), cosc(t2), sinc3(t2))
+    } else {
+        let t = t2.sqrt();
+        let (s, c) = t.sin_cos();
+        let one_minus_cos = if c >= 0.0 { s * s / (1.0 + c) } else { 1.0 - c };
+        (s / t, one_minus_cos / t2, (t - s) / (t * t2))
+    }
+}
+
+/// `I + a ω̂ + b ω̂²`, written entry by entry with `ω̂² = ωωᵀ − θ² I` whose diagonal is taken as
+/// `−(ω_j² + ω_k²)` (no cancellation): the same roundings as the matrix expression, without the
+/// 27-multiplication product ω̂ ω̂ and the temporaries.
+#[inline]
+pub(crate) fn rodrigues_matrix(w: &Vector3<f64>, a: f64, b: f64) -> Matrix3<f64> {
+    let (x, y, z) = (w.x, w.y, w.z);
+    let (xy, xz, yz) = (b * (x * y), b * (x * z), b * (y * z));
+    let (ax, ay, az) = (a * x, a * y, a * z);
+    Matrix3::new(
+        1.0 - b * (y * y + z * z),
+        xy - az,
+        xz + ay,
+        xy + az,
+        1.0 - b * (x * x + z * z),
+        yz - ax,
+        xz - ay,
+        yz + ax,
+        1.0 - b * (x * x + y * y),
+    )
+}
+
+/// `v + a ω × v + b ω × (ω × v)` = `(I + a ω̂ + b ω̂²) v` without forming the matrix.
+#[inline]
+pub(crate) fn rodrigues_apply(w: &Vector3<f64>, a: f64, b: f64, v: &Vector3<f64>) -> Vector3<f64> {
+    let wv = w.cross(v);
+    v + wv * a + w.cross(&wv) * b
+}
+
 /// `(1 − (θ/2) cot(θ/2))/θ² = 1/θ² − (1 + cos θ)/(2θ sin θ)
 ///  = 1/12 + θ²/720 + θ⁴/30240 + θ⁶/1209600 + …` (from x cot x = 1 − x²/3 − x⁴/45 − 2x⁶/945 − x⁸/4725).
 ///
@@ -174,6 +221,32 @@ impl So3 {
         s.norm().atan2(c)
     }
 
+    /// The c < 0 branch of `log` (θ ∈ (π/2, π]), see the `log` docs: θ = atan2(|s|, c), axis from
+    /// the largest column of the symmetric part, sign from s. Out of line: it is the rare case.
+    #[cold]
+    #[inline(never)]
+    fn log_obtuse(&self, s: &Vector3<f64>, sn: f64, c: f64) -> Vector3<f64> {
+        let theta = sn.atan2(c);
+        // θ > π/2: B = (1 − c) n nᵀ from the symmetric part; its largest diagonal entry is ≥ (1 − c)/3.
+        let b = 0.5 * (self.r + self.r.transpose()) - Matrix3::identity() * c;
+        let i = if b[(0, 0)] >= b[(1, 1)] && b[(0, 0)] >= b[(2, 2)] {
+            0
+        } else if b[(1, 1)] >= b[(2, 2)] {
+            1
+        } else {
+            2
+        };
+        let col = b.column(i).into_owned();
+        let n = col / col.norm();
+        let sign = match n.dot(s) {
+            d if d > 0.0 => 1.0,
+            d if d < 0.0 => -1.0,
+            // θ = π exactly: ±π n are both logarithms; pick the one with positive n_i.
+            _ => 1.0,
+        };
+        n * (sign * theta)
+    }
+
     /// `(vee(R − Rᵀ)/2, (tr R − 1)/2)` = `(sin θ · n, cos θ)`.
     #[inline]
     fn sin_cos_parts(&self) -> (Vector3<f64>, f64) {
@@ -213,20 +286,33 @@ impl LieGroup for So3 {
             r: self.r * other.r,
         }
     }
-    /// `R⁻¹ = Rᵀ`.
+    /// `R⁻¹ = Rᵀ` (a transpose: nine moves, no arithmetic).
     #[inline]
     fn inverse(&self) -> Self {
+        let r = &self.r;
         Self {
-            r: self.r.transpose(),
+            r: Matrix3::new(
+                r[(0, 0)],
+                r[(1, 0)],
+                r[(2, 0)],
+                r[(0, 1)],
+                r[(1, 1)],
+                r[(2, 1)],
+                r[(0, 2)],
+                r[(1, 2)],
+                r[(2, 2)],
+            ),
         }
     }
     /// Rodrigues: `exp(ω) = I + (sin θ/θ) ω̂ + ((1 − cos θ)/θ²) ω̂²`, θ = |ω| (any θ, also > π).
     #[inline]
+    ///
+    /// One `sin_cos(θ)` and one square root ([`rodrigues_coeffs`]); the matrix is assembled entry
+    /// by entry ([`rodrigues_matrix`]).
     fn exp(w: &Vector3<f64>) -> Self {
-        let t2 = w.norm_squared();
-        let k = skew(w);
+        let (a, b, _) = rodrigues_coeffs(w.norm_squared());
         Self {
-            r: Matrix3::identity() + k * sinc(t2) + k * k * cosc(t2),
+            r: rodrigues_matrix(w, a, b),
         }
     }
     /// The principal logarithm, θ ∈ [0, π].
@@ -238,40 +324,38 @@ impl LieGroup for So3 {
     /// at θ = π − 1e-10 the result is accurate to ~1e-15 and at θ = π exactly it is one of the two
     /// valid answers ±π n (the one whose largest component is positive). Never NaN for a rotation;
     /// [`LieError::NonFinite`] for non-finite input.
+    ///
+    /// Speed: for c ≥ 0 (θ ≤ π/2, the common case) θ is `asin |s|` when |s| ≤ c (θ ≤ π/4, where
+    /// asin has slope ≤ √2) and `acos c` otherwise (θ ∈ (π/4, π/2], slope ≤ √2): each is a cheaper
+    /// libm call than atan2 and just as accurate there (arguments clamped to ≤ 1, so a drifted
+    /// matrix cannot produce NaN). The c < 0 branch (θ > π/2, including the near-π case) keeps
+    /// atan2 and lives in a separate cold function, so the fast path inlines.
+    #[inline]
     fn log(&self) -> Result<Vector3<f64>, LieError> {
-        if !self.r.iter().all(|x| x.is_finite()) {
+        let (s, c) = self.sin_cos_parts();
+        // Every entry of R enters s or c through + or −, so a non-finite entry makes s or c
+        // non-finite: four checks instead of nine. (s or c can also overflow from huge finite
+        // entries; the full check then decides, as before.)
+        let parts_finite = s.x.is_finite() && s.y.is_finite() && s.z.is_finite() && c.is_finite();
+        if !(parts_finite || self.is_finite()) {
             return Err(LieError::NonFinite {
                 what: "rotation matrix",
             });
         }
-        let (s, c) = self.sin_cos_parts();
         let sn = s.norm();
-        let theta = sn.atan2(c);
         if c >= 0.0 {
             // θ ≤ π/2: |s| = sin θ is a well-conditioned measure of the axis.
             if sn == 0.0 {
                 return Ok(s);
             }
+            let theta = if sn <= c {
+                sn.min(1.0).asin()
+            } else {
+                c.min(1.0).acos()
+            };
             return Ok(s * (theta / sn));
         }
-        // θ > π/2: B = (1 − c) n nᵀ from the symmetric part; its largest diagonal entry is ≥ (1 − c)/3.
-        let b = 0.5 * (self.r + self.r.transpose()) - Matrix3::identity() * c;
-        let i = if b[(0, 0)] >= b[(1, 1)] && b[(0, 0)] >= b[(2, 2)] {
-            0
-        } else if b[(1, 1)] >= b[(2, 2)] {
-            1
-        } else {
-            2
-        };
-        let col = b.column(i).into_owned();
-        let n = col / col.norm();
-        let sign = match n.dot(&s) {
-            d if d > 0.0 => 1.0,
-            d if d < 0.0 => -1.0,
-            // θ = π exactly: ±π n are both logarithms; pick the one with positive n_i.
-            _ => 1.0,
-        };
-        Ok(n * (sign * theta))
+        Ok(self.log_obtuse(&s, sn, c))
     }
     #[inline]
     fn hat(w: &Vector3<f64>) -> Matrix3<f64> {
@@ -330,17 +414,16 @@ impl LieGroup for So3 {
     }
     /// `d^L exp_ω = I − ((1 − cos θ)/θ²) ω̂ + ((θ − sin θ)/θ³) ω̂²` (the right Jacobian J_r).
     #[inline]
+    ///
+    /// One `sin_cos(θ)` for both coefficients ([`rodrigues_coeffs`]), matrix entry by entry.
     fn dexp_left(w: &Vector3<f64>) -> Matrix3<f64> {
-        let t2 = w.norm_squared();
-        let k = skew(w);
-        Matrix3::identity() - k * cosc(t2) + k * k * sinc3(t2)
+        let (_, b, c) = rodrigues_coeffs(w.norm_squared());
+        rodrigues_matrix(w, -b, c)
     }
     /// `(d^L exp_ω)⁻¹ = I + ω̂/2 + (1/θ² − (1 + cos θ)/(2θ sin θ)) ω̂²`; infinite entries at θ = 2π.
     #[inline]
     fn dexp_left_inv(w: &Vector3<f64>) -> Matrix3<f64> {
-        let t2 = w.norm_squared();
-        let k = skew(w);
-        Matrix3::identity() + k * 0.5 + k * k * dexp_inv_coeff(t2)
+        rodrigues_matrix(w, 0.5, dexp_inv_coeff(w.norm_squared()))
     }
     #[inline]
     fn is_finite(&self) -> bool {
@@ -356,10 +439,9 @@ impl CayleyGroup for So3 {
     /// `cay(ω) = (I − ω̂/2)⁻¹(I + ω̂/2) = I + 4/(4 + θ²) (ω̂ + ω̂²/2)`.
     #[inline]
     fn cay(w: &Vector3<f64>) -> Self {
-        let k = skew(w);
         let a = 4.0 / (4.0 + w.norm_squared());
         Self {
-            r: Matrix3::identity() + (k + k * k * 0.5) * a,
+            r: rodrigues_matrix(w, a, 0.5 * a),
         }
     }
     /// `cay⁻¹(R) = 2 vee(R − Rᵀ)/(1 + tr R)` (the closed form of `2 (R − I)(R + I)⁻¹`); an error

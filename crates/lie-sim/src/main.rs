@@ -308,7 +308,8 @@ fn cmd_trade(
     })?;
     say!(
         "reference: {} (estimated error {:.1e})",
-        report.reference.description, report.reference.estimated_error
+        report.reference.description,
+        report.reference.estimated_error
     );
     say!(
         "observed orders (slope of log error against log h, over errors between {:.0} × the \
