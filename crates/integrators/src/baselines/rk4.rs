@@ -13,8 +13,9 @@
 //! (`q̇ = ½ q ⊗ (0, Ω)` is `Ṙ = R Ω̂` for the body angular velocity Ω.) Each step is one classical
 //! RK4 step of this ODE in ℝ⁴ × ℝ³, followed by the renormalisation q ← q/|q|, so the rotation
 //! stays orthogonal to round-off. Nothing else is preserved: the energy and the Casimir |Π|² drift
-//! by O(h⁴) per unit time (RK4's error is dissipative on the rigid body), the price of its
-//! order 4 and its low cost. Stack only, no heap allocation per step.
+//! linearly in t (on the free rigid body 𝕀 = diag(1, 2, 3) the measured drift rate falls 32× when
+//! h halves, see docs/work-precision.md), the price of its order 4 and its low cost. Stack only,
+//! no heap allocation per step.
 
 use crate::lie_poisson::check_state;
 use crate::system::force;

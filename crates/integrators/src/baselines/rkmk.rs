@@ -27,8 +27,7 @@
 //! exact operator would be a dense dim 𝔤 × dim 𝔤 matrix to form and invert. The first stage has
 //! Θ₁ = 0 and skips it. Without a potential the stages do not need g_i and no exponential is
 //! evaluated except the final one; without reconstruction only μ is integrated (then the method
-//! is plain RK4
-//! on μ). For fixed-size groups every quantity lives on the stack.
+//! is plain RK4 on μ). For fixed-size groups every quantity lives on the stack.
 
 use crate::lie_poisson::check_state;
 use crate::system::force;
