@@ -188,7 +188,8 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S>
         }
         let g1 = match gbar {
             Some(gb) => {
-                let g1 = gb.compose(&tb);
+                // normalize: keep g on the group to round-off over any number of steps.
+                let g1 = gb.compose(&tb).normalize();
                 if !g1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration g_{k+1}",

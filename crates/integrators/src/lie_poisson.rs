@@ -268,7 +268,9 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
                     gk.compose(&tb).compose(&tb)
                 } else {
                     gk.compose(&T::tau(&xi.scale(th))).compose(&tb)
-                };
+                }
+                // Keep g on the group to round-off over any number of steps.
+                .normalize();
                 if !g1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration g_{k+1}",

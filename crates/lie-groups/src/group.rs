@@ -84,6 +84,14 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
             .try_inverse()
             .unwrap_or_else(|| nan_operator::<Self>())
     }
+    /// Removes the round-off drift off the group that long products accumulate (RᵀR − I for
+    /// rotations grows like √N ε over N products) by a correction of the size of that drift, so that
+    /// an element reconstructed over 10⁷ steps stays on the group to round-off. The provided form is
+    /// the identity, for representations that cannot drift; integrators call it after each
+    /// reconstruction step.
+    fn normalize(&self) -> Self {
+        self.clone()
+    }
     /// Whether every entry of the element is finite.
     fn is_finite(&self) -> bool {
         let m = self.matrix().to_mat();

@@ -138,6 +138,14 @@ impl Se2 {
 }
 
 impl LieGroup for Se2 {
+    /// Normalizes the rotation part; the translation cannot drift off.
+    #[inline]
+    fn normalize(&self) -> Self {
+        Self {
+            rot: self.rot.normalize(),
+            t: self.t,
+        }
+    }
     type Algebra = Vector3<f64>;
     type Operator = Matrix3<f64>;
     type Matrix = Matrix3<f64>;

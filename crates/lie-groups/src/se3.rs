@@ -191,6 +191,14 @@ impl Se3 {
 }
 
 impl LieGroup for Se3 {
+    /// Normalizes the rotation part (see [`So3`]'s `normalize`); the translation cannot drift off.
+    #[inline]
+    fn normalize(&self) -> Self {
+        Self {
+            rot: self.rot.normalize(),
+            t: self.t,
+        }
+    }
     /// ξ = (ω, v): rotation first.
     type Algebra = Vector6<f64>;
     type Operator = Matrix6<f64>;

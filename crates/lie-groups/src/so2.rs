@@ -132,6 +132,15 @@ pub(crate) fn check_rotation2(m: &Matrix2<f64>, tol: f64) -> Result<(), LieError
 }
 
 impl LieGroup for So2 {
+    /// Rescales (cos θ, sin θ) to unit length.
+    #[inline]
+    fn normalize(&self) -> Self {
+        let n = self.c.hypot(self.s);
+        Self {
+            c: self.c / n,
+            s: self.s / n,
+        }
+    }
     type Algebra = SVector<f64, 1>;
     type Operator = Matrix1<f64>;
     type Matrix = Matrix2<f64>;

@@ -577,3 +577,39 @@ fn se3_adjoint_is_block_lower_triangular_in_omega_v_order() {
     let _unused: SVector<f64, 6> = Vector6::zeros();
     let _m: Matrix4<f64> = g.matrix();
 }
+
+/// `normalize` pulls a drifted rotation back onto SO(3) to round-off and leaves an exact one
+/// unchanged to round-off; 10⁶ products with it stay orthogonal to round-off.
+#[test]
+fn so3_normalize_removes_drift_without_moving_the_rotation() {
+    use lie_groups::{LieGroup, So3};
+    use nalgebra::{Matrix3, Vector3};
+    let r = So3::exp(&Vector3::new(0.4, -1.1, 2.0));
+    let drifted = r.as_matrix()
+        * (Matrix3::identity()
+            + Matrix3::new(1.0, 2.0, -1.0, 0.5, -2.0, 1.0, 3.0, 0.0, 1.0) * 1e-9);
+    let fixed = So3::from_matrix_with_tolerance(&drifted, 1e-6)
+        .unwrap()
+        .normalize();
+    let orth = (fixed.as_matrix().transpose() * fixed.as_matrix() - Matrix3::identity()).amax();
+    assert!(
+        orth < 1e-15,
+        "orthogonality error {orth:.2e} after one normalize"
+    );
+    assert!(
+        (fixed.as_matrix() - drifted).amax() < 1e-8,
+        "normalize moved R by more than the drift"
+    );
+    let exact = r.normalize();
+    assert!((exact.as_matrix() - r.as_matrix()).amax() < 1e-15);
+    let step = So3::exp(&Vector3::new(0.01, -0.02, 0.015));
+    let mut g = So3::identity();
+    for _ in 0..1_000_000 {
+        g = g.compose(&step).normalize();
+    }
+    let orth = (g.as_matrix().transpose() * g.as_matrix() - Matrix3::identity()).amax();
+    assert!(
+        orth < 1e-15,
+        "orthogonality error {orth:.2e} after 10⁶ normalized products"
+    );
+}

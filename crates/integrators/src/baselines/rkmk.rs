@@ -147,7 +147,7 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
                 what: "RKMK4 stage (Θ, μ)",
             });
         }
-        let g1 = gk.compose(&G::exp(&theta));
+        let g1 = gk.compose(&G::exp(&theta)).normalize();
         if !g1.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "configuration g_{k+1}",
