@@ -19,7 +19,7 @@
 //! |μ| = 1e-8 is solved as accurately as |μ| = 1), or when `Δξ = 0`.
 
 use crate::IntegratorError;
-use lie_groups::{DenseMatrix, LieGroup, Operator, Vector};
+use lie_groups::{LieGroup, Operator, Vector};
 
 /// Which iteration solves the implicit step equations (see the module page).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -61,42 +61,14 @@ impl Default for SolverConfig {
     }
 }
 
-/// The n×n operator whose columns are `col(0), …, col(n−1)`.
-///
-/// Built through a stack buffer for n ≤ 8 (so fixed-size operators are assembled without heap
-/// allocation) and through a heap matrix beyond.
+/// The n×n operator whose j-th column is `col(j)` (n must be dim 𝔤): stack-buffered for the
+/// fixed-size groups, see [`lie_groups::matrix_path::operator_from_column_fn`].
 pub fn operator_from_columns<G: LieGroup>(
     n: usize,
-    mut col: impl FnMut(usize) -> G::Algebra,
+    col: impl FnMut(usize) -> G::Algebra,
 ) -> G::Operator {
-    const MAX_STACK: usize = 8;
-    if n <= 3 {
-        // The common SO(3)/SE(2) case: a 9-entry buffer (zeroing the 64-entry one below costs
-        // as much as filling it).
-        let mut buf = [0.0f64; 9];
-        for j in 0..n {
-            let c = col(j);
-            for i in 0..n {
-                buf[j * n + i] = c.get(i);
-            }
-        }
-        let view = faer::MatRef::from_column_major_slice(&buf[..n * n], n, n);
-        G::Operator::from_mat(view).expect("an n×n operator of the group")
-    } else if n <= MAX_STACK {
-        let mut buf = [0.0f64; MAX_STACK * MAX_STACK];
-        for j in 0..n {
-            let c = col(j);
-            for i in 0..n {
-                buf[j * n + i] = c.get(i);
-            }
-        }
-        let view = faer::MatRef::from_column_major_slice(&buf[..n * n], n, n);
-        G::Operator::from_mat(view).expect("an n×n operator of the group")
-    } else {
-        let cols: Vec<G::Algebra> = (0..n).map(col).collect();
-        let m = faer::Mat::from_fn(n, n, |i, j| cols[j].get(i));
-        G::Operator::from_mat(m.as_ref()).expect("an n×n operator of the group")
-    }
+    debug_assert_eq!(n, G::dim());
+    lie_groups::matrix_path::operator_from_column_fn::<G>(col)
 }
 
 /// The operator `δ ↦ ad*_δ μ` (linear in δ; antisymmetric: its transpose is `η ↦ −ad*_η μ`).

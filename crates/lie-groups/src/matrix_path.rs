@@ -25,14 +25,39 @@ pub fn operator_from_columns<G: LieGroup>(
     mut f: impl FnMut(&G::Algebra) -> G::Algebra,
 ) -> G::Operator {
     let n = G::dim();
-    let mut m = Mat::zeros(n, n);
-    for j in 0..n {
-        let col = f(&G::Algebra::basis(n, j));
-        for i in 0..n {
-            m[(i, j)] = col.get(i);
+    operator_from_column_fn::<G>(|j| f(&G::Algebra::basis(n, j)))
+}
+
+/// Builds the n×n operator (n = dim 𝔤) whose j-th column is `col(j)`, through a stack buffer for
+/// n ≤ 8 (no heap allocation for the fixed-size groups: this sits in integrators' Newton
+/// iterations) and a faer matrix above.
+pub fn operator_from_column_fn<G: LieGroup>(col: impl FnMut(usize) -> G::Algebra) -> G::Operator {
+    /// Fills an `M`-entry buffer column-major; `M` ≥ n² (zeroing a larger buffer than needed costs as
+    /// much as filling it, hence two sizes).
+    fn buffered<G: LieGroup, const M: usize>(
+        n: usize,
+        mut col: impl FnMut(usize) -> G::Algebra,
+    ) -> G::Operator {
+        let mut buf = [0.0f64; M];
+        for j in 0..n {
+            let c = col(j);
+            for i in 0..n {
+                buf[j * n + i] = c.get(i);
+            }
+        }
+        let view = MatRef::from_column_major_slice(&buf[..n * n], n, n);
+        G::Operator::from_mat(view).expect("an n×n operator of the group")
+    }
+    let n = G::dim();
+    match n {
+        0..=3 => buffered::<G, 9>(n, col),
+        4..=8 => buffered::<G, 64>(n, col),
+        _ => {
+            let cols: Vec<G::Algebra> = (0..n).map(col).collect();
+            let m = Mat::from_fn(n, n, |i, j| cols[j].get(i));
+            G::Operator::from_mat(m.as_ref()).expect("an n×n operator of the group")
         }
     }
-    G::Operator::from_mat(m.as_ref()).expect("n×n operator")
 }
 
 /// exp(ξ) = e^{ξ̂} by Padé scaling and squaring.
