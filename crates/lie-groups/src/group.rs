@@ -56,6 +56,11 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
     fn adjoint_apply(&self, xi: &Self::Algebra) -> Self::Algebra {
         self.adjoint().apply(xi)
     }
+    /// `Ad_{g⁻¹} ξ`, without forming g⁻¹ where the group has a closed form (the product of
+    /// G ⋉ 𝔤 needs it).
+    fn adjoint_inverse_apply(&self, xi: &Self::Algebra) -> Self::Algebra {
+        self.inverse().adjoint_apply(xi)
+    }
     /// `Ad*_g μ = (Ad_g)ᵀ μ` (the dual map, not the coadjoint action).
     fn coadjoint_apply(&self, mu: &Self::Algebra) -> Self::Algebra {
         self.adjoint().apply_transpose(mu)

@@ -308,6 +308,13 @@ impl LieGroup for Se3 {
         let rw = r * head(xi);
         join(&rw, &(r * tail(xi) + self.t.cross(&rw)))
     }
+    /// `Ad_{g⁻¹} (ω, v) = (Rᵀ ω, Rᵀ (v − t × ω))`, inverting `Ad_g (ω, v) = (R ω, t × R ω + R v)`.
+    #[inline]
+    fn adjoint_inverse_apply(&self, xi: &Vector6<f64>) -> Vector6<f64> {
+        let r = self.rot.as_matrix();
+        let w = head(xi);
+        join(&r.tr_mul(&w), &r.tr_mul(&(tail(xi) - self.t.cross(&w))))
+    }
     /// `Ad*_g (μ_ω, μ_v) = (Rᵀ(μ_ω + μ_v × t), Rᵀ μ_v)`.
     #[inline]
     fn coadjoint_apply(&self, mu: &Vector6<f64>) -> Vector6<f64> {

@@ -406,6 +406,11 @@ impl LieGroup for So3 {
     fn adjoint_apply(&self, xi: &Vector3<f64>) -> Vector3<f64> {
         self.r * xi
     }
+    /// `Ad_{R⁻¹} ξ = Rᵀ ξ`.
+    #[inline]
+    fn adjoint_inverse_apply(&self, xi: &Vector3<f64>) -> Vector3<f64> {
+        self.r.tr_mul(xi)
+    }
     /// `Ad*_R μ = Rᵀ μ`.
     #[inline]
     fn coadjoint_apply(&self, mu: &Vector3<f64>) -> Vector3<f64> {

@@ -178,6 +178,11 @@ pub fn check_adjoint<G: LieGroup>(a: &G::Algebra, b: &G::Algebra, c: &G::Algebra
         1e-13 * s2,
     );
     assert_small(
+        "Ad_{g⁻¹} ξ (apply) = Ad_g⁻¹ · ξ",
+        vec_diff(&g.adjoint_inverse_apply(c), &g.inverse().adjoint().apply(c)),
+        1e-13 * s2,
+    );
+    assert_small(
         "ad_ξ = matrix commutator",
         op_diff::<G>(&G::ad(a), &matrix_path::ad::<G>(a)),
         1e-13 * s2,

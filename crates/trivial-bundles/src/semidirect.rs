@@ -177,7 +177,7 @@ impl<G: LieGroup> LieGroup for TangentBundle<G> {
     /// `(g, ξ)(h, η) = (gh, Ad_{h⁻¹} ξ + η)`.
     #[inline]
     fn compose(&self, other: &Self) -> Self {
-        let xi = other.g.inverse().adjoint_apply(&self.xi).add(&other.xi);
+        let xi = other.g.adjoint_inverse_apply(&self.xi).add(&other.xi);
         Self::from_parts(self.g.compose(&other.g), xi)
     }
     /// `(g, ξ)⁻¹ = (g⁻¹, −Ad_g ξ)`.
