@@ -4,14 +4,18 @@
 //! `r(ξ) = 0` with `∂r/∂ξ = I + O(h)`. Three iterations are offered ([`SolverKind`]):
 //!
 //! - [`SolverKind::Newton`]: `ξ ← ξ − J(ξ)⁻¹ r(ξ)` with the analytic Jacobian J assembled by the
-//!   integrator from the operators of the group and the system (Ad, ad*, d^L τ, ∂²h/∂μ²). The
-//!   second derivative of τ is not available through [`lie_groups::Tau`], so J replaces
-//!   `∂/∂ζ (d^{L*}τ_ζ μ)` by its leading term `−½ ad*_{(·)} μ` (exact for the linear part of every τ
-//!   with `τ(ζ) = exp(ζ) + O(ζ³)`, which holds for exp and Cayley) and drops the derivative of the
-//!   force: J is exact up to O(h²), so the iteration contracts by a factor O(h²) per step.
+//!   integrator from the operators of the group and the system (Ad, ad*, d^L τ, ∂²h/∂μ², and the
+//!   second derivative `D(ζ; μ) = ∂/∂ζ (d^{L*}τ_ζ μ)` from
+//!   [`lie_groups::Tau::dtau_left_dual_derivative`]). Where the group has a closed form of D
+//!   (SO(3) with exp and Cayley) the Lie–Poisson Jacobian is exact and Newton converges
+//!   quadratically; otherwise D is its leading term `δ ↦ −½ ad*_δ μ` (exact at ζ = 0 for every τ
+//!   with `τ(ζ) = exp(ζ) + O(ζ³)`, which holds for exp and Cayley) and J is exact up to O(h²), so the
+//!   iteration contracts by a factor O(h²) per step. The derivative of the force is dropped in
+//!   both cases (an O(h²) error with a potential); the Euler–Poincaré Jacobian has its own
+//!   O(h²) approximations (see [`crate::euler_poincare`]).
 //! - [`SolverKind::NewtonFiniteDifference`]: Newton with J from central differences of r
 //!   (2n residual evaluations per iteration): quadratic convergence, a documented fallback for
-//!   large steps where the O(h²) Jacobian error matters.
+//!   large steps where an O(h²) Jacobian error matters (groups without closed forms, potentials).
 //! - [`SolverKind::FixedPoint`]: `ξ ← ξ − r(ξ)` (J replaced by I), the cheapest iteration; it
 //!   contracts by a factor O(h ‖∂²h/∂μ²‖ ‖μ‖).
 //!
@@ -24,7 +28,7 @@ use lie_groups::{LieGroup, Operator, Vector};
 /// Which iteration solves the implicit step equations (see the module page).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum SolverKind {
-    /// Newton's method with the analytic (O(h²)-accurate) Jacobian.
+    /// Newton's method with the analytic Jacobian (exact or O(h²)-accurate, see the module page).
     #[default]
     Newton,
     /// Newton's method with a central finite-difference Jacobian (fallback; 2n extra residuals).

@@ -89,6 +89,16 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
             .try_inverse()
             .unwrap_or_else(|| nan_operator::<Self>())
     }
+    /// `D exp(ξ; μ) := ∂/∂ξ (d^{L*}exp_ξ μ)`, the derivative in ξ of the dual tangent map at a fixed
+    /// covector μ, as the operator `δ ↦ (d/ds) d^{L*}exp_{ξ+sδ} μ |_{s=0}` (the second derivative
+    /// of exp that Newton Jacobians of the Lie–Poisson step need).
+    ///
+    /// The provided form is the first-order approximation `−½ ad*_{(·)} μ` (δ ↦ −½ ad*_δ μ): from
+    /// `d^{L*}exp_ξ = I − ½ ad*_ξ + O(ξ²)` it is exact at ξ = 0 and off by O(|ξ| |μ|) elsewhere.
+    /// Groups with a closed form override it with the exact derivative.
+    fn dexp_left_dual_derivative(_xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Operator {
+        half_ad_dual_operator::<Self>(mu)
+    }
     /// Removes the round-off drift off the group that long products accumulate (RᵀR − I for
     /// rotations grows like √N ε over N products) by a correction of the size of that drift, so that
     /// an element reconstructed over 10⁷ steps stays on the group to round-off. The provided form is
@@ -114,6 +124,16 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
         }
         best
     }
+}
+
+/// The operator `δ ↦ −½ ad*_δ μ`: the leading term of `∂/∂ξ (d^{L*}τ_ξ μ)` at ξ = 0 for every τ
+/// with `τ(ξ) = exp(ξ) + O(ξ³)` (exp and Cayley), the default of
+/// [`LieGroup::dexp_left_dual_derivative`] and [`crate::CayleyGroup::dcay_left_dual_derivative`].
+pub(crate) fn half_ad_dual_operator<G: LieGroup>(mu: &G::Algebra) -> G::Operator {
+    let n = G::dim();
+    crate::matrix_path::operator_from_column_fn::<G>(|j| {
+        G::ad_dual_apply(&G::Algebra::basis(n, j), mu).scale(-0.5)
+    })
 }
 
 /// An n×n operator of NaNs: what a tangent-map inverse returns outside its domain.

@@ -116,6 +116,35 @@ pub(crate) fn rodrigues_apply(w: &Vector3<f64>, a: f64, b: f64, v: &Vector3<f64>
     v + wv * a + w.cross(&wv) * b
 }
 
+/// The two coefficients of `exp`, `(sin θ/θ, (1 − cos θ)/θ²)`, from ONE `sin_cos(θ/2)` and no
+/// division after it (the fastest form, used only by `So3::exp`).
+///
+/// With h = θ/2 (halving is exact): `sin θ/θ = 2 (sin h/θ) cos h` and `(1 − cos θ)/θ² =
+/// 2 (sin h/θ)²`: products only, so no cancellation anywhere (also near θ = π and beyond), and
+/// each coefficient is within a few ulp relative. `1/θ` is taken before `sin_cos` and overlaps
+/// with it. Below [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Horner form with
+/// reciprocal coefficients (one rounding more per term than dividing, i.e. ≤ 1e-17 absolute
+/// there), which also avoids 1/θ at θ = 0.
+#[inline]
+fn exp_coeffs(t2: f64) -> (f64, f64) {
+    if t2 < SMALL_ANGLE_SQ {
+        // sin θ/θ = 1 − θ²/6 + θ⁴/120 − θ⁶/5040 + θ⁸/362880 − …
+        let a = 1.0
+            + t2 * (-1.0 / 6.0 + t2 * (1.0 / 120.0 + t2 * (-1.0 / 5040.0 + t2 * (1.0 / 362880.0))));
+        // (1 − cos θ)/θ² = 1/2 − θ²/24 + θ⁴/720 − θ⁶/40320 + θ⁸/3628800 − …
+        let b = 0.5
+            + t2 * (-1.0 / 24.0
+                + t2 * (1.0 / 720.0 + t2 * (-1.0 / 40320.0 + t2 * (1.0 / 3628800.0))));
+        (a, b)
+    } else {
+        let t = t2.sqrt();
+        let inv_t = 1.0 / t;
+        let (sh, ch) = (0.5 * t).sin_cos();
+        let q = sh * inv_t;
+        (2.0 * q * ch, 2.0 * q * q)
+    }
+}
+
 /// `(1 − (θ/2) cot(θ/2))/θ² = 1/θ² − (1 + cos θ)/(2θ sin θ)
 ///  = 1/12 + θ²/720 + θ⁴/30240 + θ⁶/1209600 + …` (from x cot x = 1 − x²/3 − x⁴/45 − 2x⁶/945 − x⁸/4725).
 ///
@@ -127,6 +156,60 @@ pub(crate) fn dexp_inv_coeff(t2: f64) -> f64 {
     } else {
         let h = 0.5 * t2.sqrt();
         (1.0 - h * h.cos() / h.sin()) / t2
+    }
+}
+
+/// θ² below which [`dexp_dual_coeff_derivs`] uses its series (θ < 1). Higher than
+/// [`SMALL_ANGLE`] because the closed forms of a′, b′ cancel badly for small θ (b′ = (a − 3b)/(2θ²)
+/// loses ~60/θ² times the relative error of b, itself ~6/θ² ulps): at θ = 1 they lose only ~2 digits
+/// of a term that enters multiplied by θ²|μ|, while nine series terms reach full precision there.
+const DUAL_DERIV_SERIES_SQ: f64 = 1.0;
+
+/// The derivatives in t = θ² of the coefficients a(t) = (1 − cos θ)/θ² = Σ_k (−t)^k/(2k+2)! and
+/// b(t) = (θ − sin θ)/θ³ = Σ_k (−t)^k/(2k+3)! of `d^{L*}exp` (used by
+/// [`LieGroup::dexp_left_dual_derivative`]):
+///
+/// `a′ = (sin θ/θ − 2a)/(2θ²) = Σ_{k≥1} (−1)^k k t^{k−1}/(2k+2)! = −1/24 + t/360 − t²/13440 + …`,
+/// `b′ = (a − 3b)/(2θ²)       = Σ_{k≥1} (−1)^k k t^{k−1}/(2k+3)! = −1/120 + t/2520 − t²/120960 + …`.
+///
+/// Below θ² = [`DUAL_DERIV_SERIES_SQ`] = 1 the series to k = 9 (first dropped term < 1e-18
+/// relative at t = 1); above it the closed forms.
+#[inline]
+fn dexp_dual_coeff_derivs(t2: f64) -> (f64, f64) {
+    // (−1)^k k/(2k+2)! and (−1)^k k/(2k+3)! for k = 1..9 (folded at compile time).
+    const DA: [f64; 9] = [
+        -1.0 / 24.0,
+        1.0 / 360.0,
+        -1.0 / 13440.0,
+        1.0 / 907200.0,
+        -1.0 / 95800320.0,
+        1.0 / 14529715200.0,
+        -1.0 / 2988969984000.0,
+        1.0 / 800296713216000.0,
+        -1.0 / 270322445352960000.0,
+    ];
+    const DB: [f64; 9] = [
+        -1.0 / 120.0,
+        1.0 / 2520.0,
+        -1.0 / 120960.0,
+        1.0 / 9979200.0,
+        -1.0 / 1245404160.0,
+        1.0 / 217945728000.0,
+        -1.0 / 50812489728000.0,
+        1.0 / 15205637551104000.0,
+        -1.0 / 5676771352412160000.0,
+    ];
+    if t2 < DUAL_DERIV_SERIES_SQ {
+        // Horner from the highest term.
+        let (mut da, mut db) = (0.0, 0.0);
+        for (ca, cb) in DA.iter().zip(&DB).rev() {
+            da = ca + t2 * da;
+            db = cb + t2 * db;
+        }
+        (da, db)
+    } else {
+        let (s, a, b) = rodrigues_coeffs(t2);
+        ((s - 2.0 * a) / (2.0 * t2), (a - 3.0 * b) / (2.0 * t2))
     }
 }
 
@@ -316,10 +399,11 @@ impl LieGroup for So3 {
     /// Rodrigues: `exp(ω) = I + (sin θ/θ) ω̂ + ((1 − cos θ)/θ²) ω̂²`, θ = |ω| (any θ, also > π).
     #[inline]
     ///
-    /// One `sin_cos(θ)` and one square root ([`rodrigues_coeffs`]); the matrix is assembled entry
-    /// by entry ([`rodrigues_matrix`]).
+    /// One `sin_cos(θ/2)`, one square root and one division, taken before the `sin_cos` so that
+    /// it overlaps with it ([`exp_coeffs`]); the matrix is assembled entry by entry
+    /// ([`rodrigues_matrix`]).
     fn exp(w: &Vector3<f64>) -> Self {
-        let (a, b, _) = rodrigues_coeffs(w.norm_squared());
+        let (a, b) = exp_coeffs(w.norm_squared());
         Self {
             r: rodrigues_matrix(w, a, b),
         }
@@ -439,6 +523,30 @@ impl LieGroup for So3 {
     fn dexp_left_inv(w: &Vector3<f64>) -> Matrix3<f64> {
         rodrigues_matrix(w, 0.5, dexp_inv_coeff(w.norm_squared()))
     }
+    /// The exact `∂/∂ω (d^{L*}exp_ω μ)`. With `d^{L*}exp_ω μ = μ + a ω×μ + b ω×(ω×μ)`,
+    /// a = (1 − cos θ)/θ², b = (θ − sin θ)/θ³ (the transpose of [`LieGroup::dexp_left`]),
+    /// and a′, b′ their derivatives in θ² (`dexp_dual_coeff_derivs`):
+    ///
+    /// `D = 2a′ (ω×μ) ωᵀ + 2b′ (ω×(ω×μ)) ωᵀ − a μ̂ − b ((ω×μ)^ + ω̂ μ̂)`,
+    ///
+    /// from `∂θ²/∂ω = 2ωᵀ`, `δ×v = −v̂ δ` and `ω×(δ×μ) = −ω̂ μ̂ δ`; at ω = 0 it is `−½ μ̂`, i.e.
+    /// `δ ↦ −½ ad*_δ μ`.
+    fn dexp_left_dual_derivative(w: &Vector3<f64>, mu: &Vector3<f64>) -> Matrix3<f64> {
+        let t2 = w.norm_squared();
+        let (_, a, b) = rodrigues_coeffs(t2);
+        let (da, db) = dexp_dual_coeff_derivs(t2);
+        let wm = w.cross(mu);
+        let wwm = w.cross(&wm);
+        // With ω̂ μ̂ = μ ωᵀ − (ω·μ) I and μ̂, (ω×μ)^ linear in their vectors:
+        // D = (2a′ ω×μ + 2b′ ω×(ω×μ) − b μ) ωᵀ + b (ω·μ) I − (a μ + b ω×μ)^.
+        let mut d = (wm * (2.0 * da) + wwm * (2.0 * db) - mu * b) * w.transpose()
+            - skew(&(mu * a + wm * b));
+        let diag = b * w.dot(mu);
+        d[(0, 0)] += diag;
+        d[(1, 1)] += diag;
+        d[(2, 2)] += diag;
+        d
+    }
     #[inline]
     fn is_finite(&self) -> bool {
         self.r.iter().all(|x| x.is_finite())
@@ -485,6 +593,16 @@ impl CayleyGroup for So3 {
     #[inline]
     fn dcay_left_inv(w: &Vector3<f64>) -> Matrix3<f64> {
         Matrix3::identity() + skew(w) * 0.5 + w * w.transpose() * 0.25
+    }
+    /// The exact `∂/∂ω (d^{L*}cay_ω μ)`. With `d^{L*}cay_ω μ = c (2μ + ω×μ)`, c = 2/(4 + θ²)
+    /// (the transpose of [`CayleyGroup::dcay_left`]) and `∂c/∂ω = −4ωᵀ/(4 + θ²)²`:
+    ///
+    /// `D = −4/(4 + θ²)² (2μ + ω×μ) ωᵀ − c μ̂`  (no small-angle branch: no division by θ);
+    /// at ω = 0 it is `−½ μ̂`, i.e. `δ ↦ −½ ad*_δ μ`.
+    fn dcay_left_dual_derivative(w: &Vector3<f64>, mu: &Vector3<f64>) -> Matrix3<f64> {
+        let d = 4.0 + w.norm_squared();
+        let c = 2.0 / d;
+        (mu * 2.0 + w.cross(mu)) * w.transpose() * (-2.0 * c / d) - skew(mu) * c
     }
 }
 

@@ -46,6 +46,15 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     fn dtau_right_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         Self::dtau_right(xi).apply_transpose(mu)
     }
+    /// `D τ(ξ; μ) := ∂/∂ξ (d^{L*}τ_ξ μ)`, the operator `δ ↦ (d/ds) d^{L*}τ_{ξ+sδ} μ |_{s=0}`.
+    ///
+    /// [`ExpMap`] and [`Cayley`] delegate to [`LieGroup::dexp_left_dual_derivative`] and
+    /// [`CayleyGroup::dcay_left_dual_derivative`] (exact where the group has a closed form); the
+    /// provided form is the first-order approximation `δ ↦ −½ ad*_δ μ`, exact at ξ = 0 for every
+    /// τ with `τ(ξ) = exp(ξ) + O(ξ³)`.
+    fn dtau_left_dual_derivative(_xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {
+        crate::group::half_ad_dual_operator::<G>(mu)
+    }
 }
 
 /// τ = exp, the group exponential, on every Lie group.
@@ -71,6 +80,10 @@ impl<G: LieGroup> Tau<G> for ExpMap {
     fn dtau_left_inv(xi: &G::Algebra) -> G::Operator {
         G::dexp_left_inv(xi)
     }
+    #[inline]
+    fn dtau_left_dual_derivative(xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {
+        G::dexp_left_dual_derivative(xi, mu)
+    }
 }
 
 /// A group with a Cayley map `cay(ξ) = (I − ξ̂/2)⁻¹ (I + ξ̂/2)` (quadratic matrix groups: SO(n),
@@ -89,6 +102,14 @@ pub trait CayleyGroup: LieGroup {
     fn dcay_left(xi: &Self::Algebra) -> Self::Operator;
     /// `(d^L cay_ξ)⁻¹`.
     fn dcay_left_inv(xi: &Self::Algebra) -> Self::Operator;
+    /// `D cay(ξ; μ) := ∂/∂ξ (d^{L*}cay_ξ μ)`, the operator `δ ↦ (d/ds) d^{L*}cay_{ξ+sδ} μ |_{s=0}`.
+    ///
+    /// The provided form is the first-order approximation `δ ↦ −½ ad*_δ μ`: from
+    /// `d^{L*}cay_ξ = I − ½ ad*_ξ + O(ξ²)` it is exact at ξ = 0 and off by O(|ξ| |μ|) elsewhere.
+    /// Groups with a closed form override it with the exact derivative.
+    fn dcay_left_dual_derivative(_xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Operator {
+        crate::group::half_ad_dual_operator::<Self>(mu)
+    }
 }
 
 /// τ = cay, the Cayley map, on every [`CayleyGroup`].
@@ -112,5 +133,9 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     #[inline]
     fn dtau_left_inv(xi: &G::Algebra) -> G::Operator {
         G::dcay_left_inv(xi)
+    }
+    #[inline]
+    fn dtau_left_dual_derivative(xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {
+        G::dcay_left_dual_derivative(xi, mu)
     }
 }

@@ -64,3 +64,135 @@ fn cayley_inverse_is_refused_at_a_half_turn() {
     // exp is unaffected
     assert!(<ExpMap as lie_groups::Tau<So3>>::tau_inv(&r).is_ok());
 }
+
+// ∂/∂ω (d^{L*}τ_ω μ): the closed forms against central differences of `dtau_left_dual_apply`.
+
+use lie_groups::{Operator, Se3, Tau};
+use nalgebra::Vector6;
+use proptest::prelude::*;
+
+/// Central differences of ξ ↦ d^{L*}τ_ξ μ, column j along the j-th basis vector, step `d`.
+/// Error O(d²)·‖third derivative‖ + O(ε/d): with d = 1e-5 and |ξ|, |μ| = O(1), below ~1e-9.
+fn fd_dual_derivative<G: LieGroup, T: Tau<G>>(
+    xi: &G::Algebra,
+    mu: &G::Algebra,
+    d: f64,
+) -> G::Operator {
+    use lie_groups::Vector;
+    let n = G::dim();
+    lie_groups::matrix_path::operator_from_column_fn::<G>(|j| {
+        let e = G::Algebra::basis(n, j);
+        let p = T::dtau_left_dual_apply(&xi.axpy(d, &e), mu);
+        let m = T::dtau_left_dual_apply(&xi.axpy(-d, &e), mu);
+        p.sub(&m).scale(0.5 / d)
+    })
+}
+
+fn max_diff<G: LieGroup>(a: &G::Operator, b: &G::Operator) -> f64 {
+    a.add(&b.scale(-1.0)).norm_max()
+}
+
+/// The directions of ω are uniform in the cube; its size is spread over 1e-8 … 2 so that the
+/// small-angle series (θ < 0.1 for a, b; θ < 1 for a′, b′) and the closed forms are exercised.
+fn omega() -> impl Strategy<Value = Vector3<f64>> {
+    (
+        prop::array::uniform3(-1.0f64..1.0),
+        prop::sample::select(vec![1e-8, 1e-4, 0.03, 0.3, 0.577, 1.0, 2.0]),
+    )
+        .prop_map(|(v, s)| Vector3::from(v) * s)
+}
+
+fn covector() -> impl Strategy<Value = Vector3<f64>> {
+    prop::array::uniform3(-2.0f64..2.0).prop_map(Vector3::from)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// The So3 exp closed form is the derivative of d^{L*}exp: |ω| ≤ 2√3 < 2π, |μ| ≤ 2√3, the
+    /// central-difference error is ≲ 1e-9; tolerance 1e-8.
+    #[test]
+    fn so3_exp_dual_derivative_matches_central_differences(w in omega(), mu in covector()) {
+        let exact = <ExpMap as Tau<So3>>::dtau_left_dual_derivative(&w, &mu);
+        let fd = fd_dual_derivative::<So3, ExpMap>(&w, &mu, 1e-5);
+        prop_assert!((exact - fd).amax() < 1e-8, "|ω| = {}: {}", w.norm(), (exact - fd).amax());
+    }
+
+    /// Same for Cayley (smooth everywhere on 𝔰𝔬(3)).
+    #[test]
+    fn so3_cayley_dual_derivative_matches_central_differences(w in omega(), mu in covector()) {
+        let exact = <Cayley as Tau<So3>>::dtau_left_dual_derivative(&w, &mu);
+        let fd = fd_dual_derivative::<So3, Cayley>(&w, &mu, 1e-5);
+        prop_assert!((exact - fd).amax() < 1e-8, "|ω| = {}: {}", w.norm(), (exact - fd).amax());
+    }
+
+    /// The provided default `δ ↦ −½ ad*_δ μ` (used by Se3, which has no closed form) is exact at
+    /// ξ = 0 and first-order accurate: d^{L*}exp_ξ μ = μ − ½ ad*_ξ μ + (1/6)(ad*_ξ)² μ − …, so
+    /// its error is the derivative of the quadratic term, ≤ (1/3)‖ad‖² |ξ| |μ| ≲ 4 |ξ|_max |μ|_max
+    /// in max-norm entries (‖ad_δ‖ ≤ 2 for unit δ on 𝔰𝔢(3)). Checked: err ≤ 4 s |μ| at
+    /// |ξ|_max ≤ s = 1e-3, plus the FD error.
+    #[test]
+    fn se3_default_dual_derivative_is_first_order_accurate(
+        x in prop::array::uniform6(-1.0f64..1.0),
+        m in prop::array::uniform6(-1.0f64..1.0),
+    ) {
+        let mu = Vector6::from(m);
+        let s = 1e-3;
+        let xi = Vector6::from(x) * s;
+        for (t, (err, err0)) in [
+            ("exp", default_errors::<ExpMap>(&xi, &mu)),
+            ("cayley", default_errors::<Cayley>(&xi, &mu)),
+        ] {
+            prop_assert!(err0 < 1e-9, "{t}: default not exact at ξ = 0: {err0}");
+            prop_assert!(err <= 4.0 * s * mu.amax() + 1e-9, "{t}: err {err} > 4|ξ||μ|");
+        }
+    }
+}
+
+/// (error at ξ, error at 0) of Se3's default `dtau_left_dual_derivative` against central differences.
+fn default_errors<T: Tau<Se3>>(xi: &Vector6<f64>, mu: &Vector6<f64>) -> (f64, f64) {
+    let at = |x: &Vector6<f64>| {
+        max_diff::<Se3>(
+            &T::dtau_left_dual_derivative(x, mu),
+            &fd_dual_derivative::<Se3, T>(x, mu, 1e-5),
+        )
+    };
+    (at(xi), at(&Vector6::zeros()))
+}
+
+/// At |ω| = 1e-8 both closed forms equal their first-order expansions to full double precision
+/// (the O(θ²) remainder is 1e-16 |μ|): no 0/0 in the small-angle branch.
+/// exp: `D = −½ μ̂ − (1/6)((ω×μ)^ + ω̂ μ̂) + O(θ²)`; Cayley: `D = −½ μ̂ − ½ μ ωᵀ + O(θ²)`.
+#[test]
+fn so3_dual_derivatives_at_tiny_angle_match_their_first_order_expansion() {
+    let w = Vector3::new(0.6e-8, -0.8e-8, 0.3e-8);
+    let mu = Vector3::new(1.5, -0.7, 2.0);
+    let hat = |v: &Vector3<f64>| So3::hat(v);
+    let exp_expected = -hat(&mu) * 0.5 - (hat(&w.cross(&mu)) + hat(&w) * hat(&mu)) / 6.0;
+    let cay_expected = -hat(&mu) * 0.5 - mu * w.transpose() * 0.5;
+    let exp = So3::dexp_left_dual_derivative(&w, &mu);
+    let cay = So3::dcay_left_dual_derivative(&w, &mu);
+    assert!((exp - exp_expected).amax() < 4e-16 * mu.amax());
+    assert!((cay - cay_expected).amax() < 4e-16 * mu.amax());
+    assert_eq!(
+        So3::dexp_left_dual_derivative(&Vector3::zeros(), &mu),
+        -hat(&mu) * 0.5
+    );
+}
+
+/// The series and closed-form branches of the exp derivative agree at the switch θ = 1: just
+/// below and just above it (θ = 1 ∓ 1e-15) the operator moves by ~1e-15 |μ| from θ, plus the
+/// round-off of either branch (a few ulps of |μ|): < 5e-15 |μ|_max. (A wrong series or closed
+/// form would show as a jump of the size of its error.)
+#[test]
+fn so3_exp_dual_derivative_is_continuous_across_the_small_angle_switch() {
+    let dir = Vector3::new(0.6, 0.0, 0.8);
+    let mu = Vector3::new(0.4, 1.3, -0.9);
+    let below = So3::dexp_left_dual_derivative(&(dir * (1.0 - 1e-15)), &mu);
+    let above = So3::dexp_left_dual_derivative(&(dir * (1.0 + 1e-15)), &mu);
+    assert!(
+        (below - above).amax() < 5e-15 * mu.amax(),
+        "{}",
+        (below - above).amax()
+    );
+}
