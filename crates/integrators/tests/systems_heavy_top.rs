@@ -241,7 +241,6 @@ fn heavy_top_lie_poisson_orders_against_rk4() {
 }
 
 #[test]
-#[ignore = "10⁵ steps × 6 methods: run in release mode"]
 fn heavy_top_vertical_momentum_conserved_over_1e5_steps() {
     for theta in [0.0, 0.5, 1.0] {
         let e = vertical_momentum_drift::<ExpMap>(top(), theta, 0.02, 100_000);

@@ -278,7 +278,6 @@ fn large_n_bodies_construct_and_step() {
 }
 
 #[test]
-#[ignore = "Newton on dim 1225 forms 1225² Jacobians: run in release mode"]
 fn so50_newton_step() {
     let (dc, de) = one_step::<50>(SolverKind::Newton);
     println!("SO(50) Newton step: Casimir change {dc:.2e}, energy change {de:.2e}");
