@@ -47,17 +47,7 @@ pub fn rk4_reference(
         let om = iinv * p;
         (r * om.cross_matrix(), p.cross(&om))
     };
-    let h = t / n as f64;
-    let (mut r, mut p) = (*r0, *pi0);
-    for _ in 0..n {
-        let (k1r, k1p) = f(&r, &p);
-        let (k2r, k2p) = f(&(r + k1r * (h / 2.0)), &(p + k1p * (h / 2.0)));
-        let (k3r, k3p) = f(&(r + k2r * (h / 2.0)), &(p + k2p * (h / 2.0)));
-        let (k4r, k4p) = f(&(r + k3r * h), &(p + k3p * h));
-        r += (k1r + k2r * 2.0 + k3r * 2.0 + k4r) * (h / 6.0);
-        p += (k1p + k2p * 2.0 + k3p * 2.0 + k4p) * (h / 6.0);
-    }
-    (r, p)
+    rk4_matrix_momentum(f, r0, pi0, t, n)
 }
 
 /// Runs `n` steps of size `h` and returns (R, Π) at the end.
@@ -141,17 +131,7 @@ pub fn rk4_heavy_top(
             p.cross(&om) + (r.transpose() * Vector3::z()).cross(mgchi),
         )
     };
-    let h = t / n as f64;
-    let (mut r, mut p) = (*r0, *pi0);
-    for _ in 0..n {
-        let (k1r, k1p) = f(&r, &p);
-        let (k2r, k2p) = f(&(r + k1r * (h / 2.0)), &(p + k1p * (h / 2.0)));
-        let (k3r, k3p) = f(&(r + k2r * (h / 2.0)), &(p + k2p * (h / 2.0)));
-        let (k4r, k4p) = f(&(r + k3r * h), &(p + k3p * h));
-        r += (k1r + k2r * 2.0 + k3r * 2.0 + k4r) * (h / 6.0);
-        p += (k1p + k2p * 2.0 + k3p * 2.0 + k4p) * (h / 6.0);
-    }
-    (r, p)
+    rk4_matrix_momentum(f, r0, pi0, t, n)
 }
 
 // ---- Helpers for the ready-made systems (tests/systems_*.rs) ----
@@ -205,4 +185,26 @@ pub fn energy_error_tenths<I: Integrator>(mut integ: I, h: f64, steps: usize) ->
         }
     }
     (first, last)
+}
+
+/// Classical RK4 with `n` steps over [0, t] on (R as a plain 3×3 matrix, Π) for the vector field
+/// `f(R, Π) = (Ṙ, Π̇)`: the shared loop of the independent references above.
+fn rk4_matrix_momentum(
+    f: impl Fn(&Matrix3<f64>, &Vector3<f64>) -> (Matrix3<f64>, Vector3<f64>),
+    r0: &Matrix3<f64>,
+    pi0: &Vector3<f64>,
+    t: f64,
+    n: usize,
+) -> (Matrix3<f64>, Vector3<f64>) {
+    let h = t / n as f64;
+    let (mut r, mut p) = (*r0, *pi0);
+    for _ in 0..n {
+        let (k1r, k1p) = f(&r, &p);
+        let (k2r, k2p) = f(&(r + k1r * (h / 2.0)), &(p + k1p * (h / 2.0)));
+        let (k3r, k3p) = f(&(r + k2r * (h / 2.0)), &(p + k2p * (h / 2.0)));
+        let (k4r, k4p) = f(&(r + k3r * h), &(p + k3p * h));
+        r += (k1r + k2r * 2.0 + k3r * 2.0 + k4r) * (h / 6.0);
+        p += (k1p + k2p * 2.0 + k3p * 2.0 + k4p) * (h / 6.0);
+    }
+    (r, p)
 }
