@@ -77,6 +77,7 @@ fn rigid_body(c: &mut Criterion) {
     let mut group = c.benchmark_group("rigid_body/solver");
     let g0 = Some(So3::exp(&Vector3::new(0.3, -0.5, 0.8)));
     for (name, kind) in [
+        ("simplified-newton", SolverKind::SimplifiedNewton),
         ("newton", SolverKind::Newton),
         ("newton-fd", SolverKind::NewtonFiniteDifference),
         ("fixed-point", SolverKind::FixedPoint),
@@ -109,7 +110,7 @@ fn rigid_body(c: &mut Criterion) {
             .with_solver(unchecked);
         bench_step(
             &mut group,
-            &format!("lp/cayley/{theta}+g/newton/no-domain-check"),
+            &format!("lp/cayley/{theta}+g/simplified-newton/no-domain-check"),
             lp,
         );
     }

@@ -94,18 +94,22 @@ impl<G: LieGroup> EulerArnold<G> {
 
 impl<G: LieGroup> System<G> for EulerArnold<G> {
     /// `h(μ) = ½⟨μ, 𝕀⁻¹μ⟩`.
+    #[inline]
     fn hamiltonian(&self, mu: &G::Algebra) -> f64 {
         0.5 * mu.dot(&self.inertia_inv.apply(mu))
     }
     /// `∂h/∂μ = 𝕀⁻¹μ`.
+    #[inline]
     fn velocity(&self, mu: &G::Algebra) -> G::Algebra {
         self.inertia_inv.apply(mu)
     }
     /// `∂²h/∂μ² = 𝕀⁻¹`.
+    #[inline]
     fn hessian(&self, _mu: &G::Algebra) -> G::Operator {
         self.inertia_inv.clone()
     }
     /// `∂l/∂ξ = 𝕀ξ`.
+    #[inline]
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra {
         self.inertia.apply(xi)
     }

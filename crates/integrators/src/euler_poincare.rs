@@ -165,10 +165,11 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S>
         let (xi, iterations) = if self.theta == 0.0 {
             (self.xi.clone(), 0)
         } else {
-            let residual = |xi: &G::Algebra| Ok(self.residual(a, xi));
-            solve::<G>(&self.config, h, self.xi.clone(), residual, |xi| {
+            let evaluate = |xi: &G::Algebra| Ok((self.residual(a, xi), ()));
+            let solution = solve::<G, ()>(&self.config, h, self.xi.clone(), evaluate, |xi, _| {
                 self.jacobian(a, xi)
-            })?
+            })?;
+            (solution.xi, solution.iterations)
         };
         if self.config.check_domain {
             check_tau_domain::<G, T>(&xi.scale(h), h)?;

@@ -35,10 +35,9 @@
 //! leading-term approximation `−½ ad*_{(·)} μ`, which remains the default for other groups and
 //! keeps J exact up to O(h²)); the force's derivative is dropped (see [`crate::solver`]).
 
-use crate::solver::{ad_dual_operator, check_tau_domain, solve};
+use crate::solver::{ad_dual_operator, check_tau_domain, operator_from_columns, solve, Solution};
 use crate::system::force;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
-use core::cell::RefCell;
 use core::marker::PhantomData;
 use lie_groups::{LieGroup, Operator, Tau, Vector};
 
@@ -162,29 +161,70 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
         self.iterations
     }
 
-    /// For a trial ξ: μ̄, μ_{k+1}, ν = Ad*_{τ(θξ)} μ_k + h F(ḡ) and τ((1−θ)ξ).
-    fn evaluate(&self, h: f64, xi: &G::Algebra) -> Evaluation<G> {
+    /// For a trial ξ: τ(θξ) (`None` for θ = 0, where it is e, and for θ = ½, where it is
+    /// τ((1−θ)ξ)), τ((1−θ)ξ), ν = Ad*_{τ(θξ)} μ_k + h F(g_k τ(θξ)) and μ_{k+1} = Ad*_{τ((1−θ)ξ)} ν.
+    #[inline]
+    fn update(&self, h: f64, xi: &G::Algebra) -> Update<G> {
         let th = self.theta;
         let b = 1.0 - th;
-        let ta: G = T::tau(&xi.scale(th));
-        // θ = ½: τ(θξ) and τ((1−θ)ξ) are the same element; evaluate it once.
-        let tb: G = if th == b {
-            ta.clone()
-        } else {
-            T::tau(&xi.scale(b))
+        let tb: G = T::tau(&xi.scale(b));
+        let ta: Option<G> = (th != 0.0 && th != b).then(|| T::tau(&xi.scale(th)));
+        let ta_ref = if th == b { Some(&tb) } else { ta.as_ref() };
+        let mut nu = match ta_ref {
+            Some(ta) => ta.coadjoint_apply(&self.mu),
+            None => self.mu.clone(),
         };
-        let mut nu = ta.coadjoint_apply(&self.mu);
         if let Some(gk) = self.g.as_ref() {
-            if let Some(f) = force(&self.system, Some(&gk.compose(&ta))) {
+            let gbar = ta_ref.map(|ta| gk.compose(ta));
+            if let Some(f) = force(&self.system, Some(gbar.as_ref().unwrap_or(gk))) {
                 nu = nu.axpy(h, &f);
             }
         }
         let mu1 = tb.coadjoint_apply(&nu);
-        let mut bar = T::dtau_left_dual_apply(&xi.scale(b), &mu1).scale(b);
+        Update { ta, tb, nu, mu1 }
+    }
+
+    /// For a trial ξ: the [`Self::update`] and
+    /// μ̄ = θ d^{L*}τ_{−θξ} μ_k + (1−θ) d^{L*}τ_{(1−θ)ξ} μ_{k+1}.
+    #[inline]
+    fn evaluate(&self, h: f64, xi: &G::Algebra) -> Evaluation<G> {
+        let th = self.theta;
+        let b = 1.0 - th;
+        let up = self.update(h, xi);
+        let mut bar = T::dtau_left_dual_apply(&xi.scale(b), &up.mu1).scale(b);
         if th != 0.0 {
             bar = bar.axpy(th, &T::dtau_left_dual_apply(&xi.scale(-th), &self.mu));
         }
-        Evaluation { bar, mu1, nu, tb }
+        Evaluation { bar, up }
+    }
+
+    /// The predictor `ξ⁰ = h ∂h/∂μ(μ_k + ½ h ad*_{v_k} μ_k + (1−θ) h F(g_k))`, v_k = ∂h/∂μ(μ_k).
+    ///
+    /// Expanding the scheme to first order in h (ξ = h v_k + O(h²), `Ad*_{τ(ζ)} = I + ad*_ζ + O(ζ²)`,
+    /// `d^{L*}τ_ζ = I − ½ ad*_ζ + O(ζ²)`) gives `μ_{k+1} = μ_k + h ad*_{v_k} μ_k + h F + O(h²)` and
+    /// `μ̄ = θ μ_k + (1−θ) μ_{k+1} + ½(θ² − (1−θ)²) h ad*_{v_k} μ_k + O(h²)`
+    /// `  = μ_k + ½ h ad*_{v_k} μ_k + (1−θ) h F + O(h²)`, so ξ⁰ is within O(h³) of the solution
+    /// (the plain `h ∂h/∂μ(μ_k)` is only O(h²)), which saves the solver an iteration.
+    fn predictor(&self, h: f64) -> G::Algebra {
+        let v = self.system.velocity(&self.mu);
+        let mut mid = self.mu.axpy(0.5 * h, &G::ad_dual_apply(&v, &self.mu));
+        if let Some(f) = force(&self.system, self.g.as_ref()) {
+            mid = mid.axpy((1.0 - self.theta) * h, &f);
+        }
+        self.system.velocity(&mid).scale(h)
+    }
+
+    /// Solves `r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) = 0` from the [`Self::predictor`].
+    fn solve_velocity(
+        &self,
+        h: f64,
+    ) -> Result<Solution<G::Algebra, Evaluation<G>>, IntegratorError> {
+        let evaluate = |xi: &G::Algebra| {
+            let ev = self.evaluate(h, xi);
+            Ok((xi.sub(&self.system.velocity(&ev.bar).scale(h)), ev))
+        };
+        let jacobian = |xi: &G::Algebra, ev: &Evaluation<G>| self.jacobian(h, xi, ev);
+        solve::<G, _>(&self.config, h, self.predictor(h), evaluate, jacobian)
     }
 
     /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ: exact
@@ -197,17 +237,27 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
         let xa = xi.scale(th);
         let xb = xi.scale(b);
         let dtb = T::dtau_left(&xb);
-        let m1 = ad_dual_operator::<G>(&ev.mu1);
         // ∂μ_{k+1}/∂ξ = (1−θ) M(μ_{k+1}) d^Lτ_{(1−θ)ξ} + θ Ad*_{τ((1−θ)ξ)} M(ν) d^Lτ_{θξ},
-        // M(μ) := (δ ↦ ad*_δ μ); exact but for the force's derivative.
-        let dmu1 = m1.compose(&dtb).scale(b).add(
-            &ev.tb
-                .adjoint()
-                .transpose()
-                .compose(&ad_dual_operator::<G>(&ev.nu))
-                .compose(&T::dtau_left(&xa))
-                .scale(th),
-        );
+        // M(μ) := (δ ↦ ad*_δ μ); exact but for the force's derivative. For θ = ½ both terms end
+        // in the same d^Lτ_{ξ/2}, which is factored out (one operator product fewer).
+        let m1 = ad_dual_operator::<G>(&ev.up.mu1);
+        let dmu1 = if th == 0.0 {
+            m1.compose(&dtb).scale(b)
+        } else {
+            // Ad*_{τ((1−θ)ξ)} M(ν), column by column: δ ↦ Ad*_{τ((1−θ)ξ)} ad*_δ ν.
+            let mnu = operator_from_columns::<G>(n, |j| {
+                ev.up
+                    .tb
+                    .coadjoint_apply(&G::ad_dual_apply(&G::Algebra::basis(n, j), &ev.up.nu))
+            });
+            if th == b {
+                m1.add(&mnu).compose(&dtb).scale(b)
+            } else {
+                m1.compose(&dtb)
+                    .scale(b)
+                    .add(&mnu.compose(&T::dtau_left(&xa)).scale(th))
+            }
+        };
         // ∂μ̄/∂ξ = (1−θ) d^{L*}τ_{(1−θ)ξ} ∂μ_{k+1}/∂ξ + (1−θ)² D((1−θ)ξ; μ_{k+1})
         //          − θ² D(−θξ; μ_k),  D(ζ; μ) := ∂/∂ζ (d^{L*}τ_ζ μ) (`Tau::dtau_left_dual_derivative`:
         // exact for groups with closed forms, else −½ M(μ), which gives
@@ -216,7 +266,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
             .transpose()
             .compose(&dmu1)
             .scale(b)
-            .add(&T::dtau_left_dual_derivative(&xb, &ev.mu1).scale(b * b));
+            .add(&T::dtau_left_dual_derivative(&xb, &ev.up.mu1).scale(b * b));
         if th != 0.0 {
             dbar = dbar.add(&T::dtau_left_dual_derivative(&xa.neg(), &self.mu).scale(-th * th));
         }
@@ -224,18 +274,19 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
     }
 }
 
+/// The new state's ingredients at a trial ξ (see [`LiePoisson::update`]).
+struct Update<G: LieGroup> {
+    ta: Option<G>,
+    tb: G,
+    nu: G::Algebra,
+    mu1: G::Algebra,
+}
+
 /// The quantities of one evaluation of the step map at a trial ξ, shared by the residual and
 /// the Newton Jacobian at the same ξ.
 struct Evaluation<G: LieGroup> {
     bar: G::Algebra,
-    mu1: G::Algebra,
-    nu: G::Algebra,
-    tb: G,
-}
-
-/// Whether two algebra vectors are bitwise equal (the Jacobian reuses an evaluation only then).
-fn same_point<V: Vector>(a: &V, b: &V) -> bool {
-    (0..a.dim()).all(|i| a.get(i).to_bits() == b.get(i).to_bits())
+    up: Update<G>,
 }
 
 impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
@@ -245,26 +296,17 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
         if !h.is_finite() {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
-        // Explicit predictor ξ⁰ = h ∂h/∂μ(μ_k): an O(h²) guess.
-        let guess = self.system.velocity(&self.mu).scale(h);
-        // The last residual evaluation, reused by the Newton Jacobian at the same ξ (the solver
-        // calls jacobian(ξ) right after residual(ξ)); bitwise the same as recomputing it.
-        let last: RefCell<Option<(G::Algebra, Evaluation<G>)>> = RefCell::new(None);
-        let residual = |xi: &G::Algebra| {
-            let ev = self.evaluate(h, xi);
-            let r = xi.sub(&self.system.velocity(&ev.bar).scale(h));
-            *last.borrow_mut() = Some((xi.clone(), ev));
-            Ok(r)
-        };
-        let jacobian = |xi: &G::Algebra| match last.borrow_mut().take() {
-            Some((at, ev)) if same_point(&at, xi) => self.jacobian(h, xi, &ev),
-            _ => self.jacobian(h, xi, &self.evaluate(h, xi)),
-        };
-        let (xi, iterations) = solve::<G>(&self.config, h, guess, residual, jacobian)?;
+        let solution = self.solve_velocity(h)?;
+        let xi = solution.xi;
         if self.config.check_domain {
             check_tau_domain::<G, T>(&xi, h)?;
         }
-        let Evaluation { mu1, tb, .. } = self.evaluate(h, &xi);
+        // The new state at the solution: from the solver's last evaluation when that was at
+        // exactly this ξ, else evaluated again (bitwise the same either way).
+        let Update { ta, tb, mu1, .. } = match solution.evaluation {
+            Some(ev) => ev.up,
+            None => self.update(h, &xi),
+        };
         if !mu1.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "momentum μ_{k+1}",
@@ -272,14 +314,12 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
         }
         let g1 = match self.g.as_ref() {
             Some(gk) => {
+                // g_{k+1} = g_k τ(θξ) τ((1−θ)ξ), from the final update (for θ = ½, τ(θξ) = τ((1−θ)ξ)).
                 let th = self.theta;
-                // τ((1−θ)ξ) comes from the final evaluation (for θ = ½ it is also τ(θξ)).
-                let g1 = if th == 0.0 {
-                    gk.compose(&tb)
-                } else if th == 1.0 - th {
-                    gk.compose(&tb).compose(&tb)
-                } else {
-                    gk.compose(&T::tau(&xi.scale(th))).compose(&tb)
+                let g1 = match ta {
+                    Some(ta) => gk.compose(&ta).compose(&tb),
+                    None if th == 1.0 - th => gk.compose(&tb).compose(&tb),
+                    None => gk.compose(&tb),
                 }
                 // Keep g on the group to round-off over any number of steps.
                 .normalize();
@@ -295,7 +335,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
         self.mu = mu1;
         self.g = g1;
         self.t += h;
-        self.iterations = iterations;
+        self.iterations = solution.iterations;
         Ok(())
     }
     fn time(&self) -> f64 {
@@ -318,5 +358,64 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
     }
     fn method_name(&self) -> String {
         format!("lie-poisson(tau={}, theta={})", T::NAME, self.theta)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::systems::{HeavyTop, RigidBody};
+    use lie_groups::{Cayley, ExpMap, So3};
+    use nalgebra::Vector3;
+
+    /// |ξ⁰ − ξ*| for the predictor ξ⁰ and the solved ξ* of one step of size h.
+    fn predictor_gap<T: Tau<So3>, S: System<So3> + Clone>(
+        system: &S,
+        theta: f64,
+        g0: Option<So3>,
+        h: f64,
+    ) -> f64 {
+        let lp =
+            LiePoisson::<So3, T, _>::new(system.clone(), theta, Vector3::new(0.5, 1.0, 0.2), g0)
+                .unwrap();
+        let solved = lp.solve_velocity(h).unwrap().xi;
+        (lp.predictor(h) - solved).amax()
+    }
+
+    /// The predictor is within O(h³) of the solution for every θ and τ, with and without a force: halving h divides the gap by 2³ (fitted order within [2.8, 3.3]
+    /// between h = 0.02 and h = 0.005). The former predictor h ∂h/∂μ(μ_k) was O(h²).
+    #[test]
+    fn predictor_is_third_order_accurate() {
+        let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+        let top =
+            HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 1.0, Vector3::new(0.0, 0.1, 0.5)).unwrap();
+        let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
+        for theta in [0.0, 0.3, 0.5, 1.0] {
+            let cases: [(&str, Box<dyn Fn(f64) -> f64>); 4] = [
+                (
+                    "free body, cayley",
+                    Box::new(|h| predictor_gap::<Cayley, _>(&body, theta, None, h)),
+                ),
+                (
+                    "free body, exp",
+                    Box::new(|h| predictor_gap::<ExpMap, _>(&body, theta, None, h)),
+                ),
+                (
+                    "heavy top, cayley",
+                    Box::new(|h| predictor_gap::<Cayley, _>(&top, theta, Some(g0), h)),
+                ),
+                (
+                    "heavy top, exp",
+                    Box::new(|h| predictor_gap::<ExpMap, _>(&top, theta, Some(g0), h)),
+                ),
+            ];
+            for (name, gap) in &cases {
+                let order = (gap(0.02) / gap(0.005)).log2() / 2.0;
+                assert!(
+                    (2.8..=3.3).contains(&order),
+                    "{name}, θ = {theta}: predictor gap order {order:.3}"
+                );
+            }
+        }
     }
 }

@@ -37,6 +37,13 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
     fn exp(xi: &Self::Algebra) -> Self;
     /// The principal logarithm, the local inverse of `exp` (an error where none exists).
     fn log(&self) -> Result<Self::Algebra, LieError>;
+    /// A radius r such that `log(exp ξ) = ξ` holds to round-off (relative error ≤ 1e-8) for every
+    /// ‖ξ‖ ≤ r (Euclidean norm of the algebra coordinates); 0 where no such bound is known.
+    ///
+    /// It lets callers skip the round trip where it is known to succeed: e.g. r = 3 < π on SO(3),
+    /// whose principal log inverts exp for rotation angles below π. The generic test suite checks
+    /// the bound on random directions up to the radius.
+    const EXP_INVERTIBLE_RADIUS: f64 = 0.0;
     /// ξ ↦ ξ̂, algebra coordinates to the algebra matrix.
     fn hat(xi: &Self::Algebra) -> Self::Matrix;
     /// ξ̂ ↦ ξ, the inverse of `hat` (the part of the matrix outside 𝔤 is ignored).
@@ -88,6 +95,12 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
         Self::dexp_left(xi)
             .try_inverse()
             .unwrap_or_else(|| nan_operator::<Self>())
+    }
+    /// `d^{L*}exp_ξ μ = (d^L exp_ξ)ᵀ μ`. The provided form builds d^L exp_ξ; groups override it
+    /// with a closed form that skips the operator (the Lie–Poisson step applies it every
+    /// iteration).
+    fn dexp_left_dual_apply(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
+        Self::dexp_left(xi).apply_transpose(mu)
     }
     /// `D exp(ξ; μ) := ∂/∂ξ (d^{L*}exp_ξ μ)`, the derivative in ξ of the dual tangent map at a fixed
     /// covector μ, as the operator `δ ↦ (d/ds) d^{L*}exp_{ξ+sδ} μ |_{s=0}` (the second derivative

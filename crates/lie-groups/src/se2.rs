@@ -138,6 +138,8 @@ impl Se2 {
 }
 
 impl LieGroup for Se2 {
+    /// The principal log inverts exp for |ω| < π (any translation); 3 keeps clear of the cut at π.
+    const EXP_INVERTIBLE_RADIUS: f64 = 3.0;
     /// Normalizes the rotation part; the translation cannot drift off.
     #[inline]
     fn normalize(&self) -> Self {
@@ -295,6 +297,9 @@ impl LieGroup for Se2 {
 }
 
 impl CayleyGroup for Se2 {
+    /// cay is a diffeomorphism onto the elements whose rotation part is not a rotation by π; the
+    /// round trip loses ≈ ε‖ξ‖² relative accuracy as g + I nears singularity (checked up to r).
+    const CAY_INVERTIBLE_RADIUS: f64 = 1000.0;
     /// `cay(ω, v) = (cay_SO(2)(ω), k [[1, −ω/2], [ω/2, 1]] v)` with `k = 1/(1 + ω²/4)`
     /// (block form of `(I − ξ̂/2)⁻¹(I + ξ̂/2)`: the translation is `(I − ωJ/2)⁻¹ v`).
     #[inline]

@@ -191,6 +191,8 @@ impl Se3 {
 }
 
 impl LieGroup for Se3 {
+    /// The principal log inverts exp for |ω| < π (any translation); 3 keeps clear of the cut at π.
+    const EXP_INVERTIBLE_RADIUS: f64 = 3.0;
     /// Normalizes the rotation part (see [`So3`]'s `normalize`); the translation cannot drift off.
     #[inline]
     fn normalize(&self) -> Self {
@@ -363,6 +365,9 @@ impl LieGroup for Se3 {
 }
 
 impl CayleyGroup for Se3 {
+    /// cay is a diffeomorphism onto the elements whose rotation part is not a rotation by π; the
+    /// round trip loses ≈ ε‖ξ‖² relative accuracy as g + I nears singularity (checked up to r).
+    const CAY_INVERTIBLE_RADIUS: f64 = 1000.0;
     /// The 4×4 matrix Cayley map `(I − ξ̂/2)⁻¹(I + ξ̂/2) = (cay ω, (I − ω̂/2)⁻¹ v)`, with
     /// `(I − ω̂/2)⁻¹ = I + (2ω̂ + ω̂²)/(4 + θ²)`.
     #[inline]

@@ -132,6 +132,8 @@ pub(crate) fn check_rotation2(m: &Matrix2<f64>, tol: f64) -> Result<(), LieError
 }
 
 impl LieGroup for So2 {
+    /// The principal log inverts exp for |ω| < π; 3 keeps clear of the cut at π.
+    const EXP_INVERTIBLE_RADIUS: f64 = 3.0;
     /// Rescales (cos θ, sin θ) to unit length.
     #[inline]
     fn normalize(&self) -> Self {
@@ -249,6 +251,9 @@ impl LieGroup for So2 {
 }
 
 impl CayleyGroup for So2 {
+    /// cay is a diffeomorphism onto the elements whose rotation part is not a rotation by π; the
+    /// round trip loses ≈ ε‖ξ‖² relative accuracy as g + I nears singularity (checked up to r).
+    const CAY_INVERTIBLE_RADIUS: f64 = 1000.0;
     /// `cay(ω) = (1 + iω/2)/(1 − iω/2) = ((1 − ω²/4) + iω)/(1 + ω²/4)`.
     #[inline]
     fn cay(xi: &Vector1<f64>) -> Self {

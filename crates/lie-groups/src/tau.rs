@@ -20,6 +20,11 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     /// Whether s ↦ τ(sξ) is a one-parameter subgroup, τ(sξ) τ(tξ) = τ((s+t)ξ) (true for exp only).
     /// Discretization maps use it: then τ(θξ) τ((1−θ)ξ) = τ(ξ) and R̃_d inverts in closed form.
     const ONE_PARAMETER_SUBGROUP: bool = false;
+    /// A radius r such that `τ⁻¹(τ(ξ)) = ξ` holds to round-off (relative error ≤ 1e-8) for every
+    /// ‖ξ‖ ≤ r; 0 where no such bound is known. Integrators skip their domain check (the round trip)
+    /// inside it. [`ExpMap`] and [`Cayley`] take it from [`LieGroup::EXP_INVERTIBLE_RADIUS`] and
+    /// [`CayleyGroup::CAY_INVERTIBLE_RADIUS`].
+    const INVERTIBLE_RADIUS: f64 = 0.0;
 
     /// τ(ξ).
     fn tau(xi: &G::Algebra) -> G;
@@ -64,6 +69,7 @@ pub struct ExpMap;
 impl<G: LieGroup> Tau<G> for ExpMap {
     const NAME: &'static str = "exp";
     const ONE_PARAMETER_SUBGROUP: bool = true;
+    const INVERTIBLE_RADIUS: f64 = G::EXP_INVERTIBLE_RADIUS;
     #[inline]
     fn tau(xi: &G::Algebra) -> G {
         G::exp(xi)
@@ -79,6 +85,10 @@ impl<G: LieGroup> Tau<G> for ExpMap {
     #[inline]
     fn dtau_left_inv(xi: &G::Algebra) -> G::Operator {
         G::dexp_left_inv(xi)
+    }
+    #[inline]
+    fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::dexp_left_dual_apply(xi, mu)
     }
     #[inline]
     fn dtau_left_dual_derivative(xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {
@@ -98,10 +108,20 @@ pub trait CayleyGroup: LieGroup {
     fn cay(xi: &Self::Algebra) -> Self;
     /// cay⁻¹(g) = 2 (g − I)(g + I)⁻¹ read back through `vee`; an error where g + I is singular.
     fn cay_inv(&self) -> Result<Self::Algebra, LieError>;
+    /// A radius r such that `cay⁻¹(cay ξ) = ξ` holds to round-off (relative error ≤ 1e-8) for
+    /// every ‖ξ‖ ≤ r; 0 where no such bound is known. On SO(3) cay is a diffeomorphism onto the
+    /// rotations by less than π, and the round trip loses accuracy only as (g + I) nears
+    /// singularity: relative error ≈ ε ‖ξ‖²/16, far below 1e-8 up to r = 1000.
+    const CAY_INVERTIBLE_RADIUS: f64 = 0.0;
     /// `d^L cay_ξ`.
     fn dcay_left(xi: &Self::Algebra) -> Self::Operator;
     /// `(d^L cay_ξ)⁻¹`.
     fn dcay_left_inv(xi: &Self::Algebra) -> Self::Operator;
+    /// `d^{L*}cay_ξ μ = (d^L cay_ξ)ᵀ μ`. The provided form builds d^L cay_ξ; groups override it
+    /// with a closed form that skips the operator.
+    fn dcay_left_dual_apply(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
+        Self::dcay_left(xi).apply_transpose(mu)
+    }
     /// `D cay(ξ; μ) := ∂/∂ξ (d^{L*}cay_ξ μ)`, the operator `δ ↦ (d/ds) d^{L*}cay_{ξ+sδ} μ |_{s=0}`.
     ///
     /// The provided form is the first-order approximation `δ ↦ −½ ad*_δ μ`: from
@@ -118,6 +138,7 @@ pub struct Cayley;
 
 impl<G: CayleyGroup> Tau<G> for Cayley {
     const NAME: &'static str = "cayley";
+    const INVERTIBLE_RADIUS: f64 = G::CAY_INVERTIBLE_RADIUS;
     #[inline]
     fn tau(xi: &G::Algebra) -> G {
         G::cay(xi)
@@ -133,6 +154,10 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     #[inline]
     fn dtau_left_inv(xi: &G::Algebra) -> G::Operator {
         G::dcay_left_inv(xi)
+    }
+    #[inline]
+    fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::dcay_left_dual_apply(xi, mu)
     }
     #[inline]
     fn dtau_left_dual_derivative(xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {

@@ -282,6 +282,27 @@ pub fn check_dexp<G: LieGroup>(a: &G::Algebra) {
     );
 }
 
+/// `τ⁻¹(τ(ξ)) = ξ` to `1e-8 (1 + ‖ξ‖_max)` (the integrators' domain criterion) at
+/// `ξ = u r dir/‖dir‖`, r = [`Tau::INVERTIBLE_RADIUS`], and at the radius itself (u = 1): the
+/// radius must be conservative, since integrators skip the round trip inside it.
+pub fn check_invertible_radius<G: LieGroup, T: Tau<G>>(dir: &G::Algebra, u: f64) {
+    let r = T::INVERTIBLE_RADIUS;
+    let n = dir.norm();
+    if r == 0.0 || n < 1e-3 {
+        return;
+    }
+    for s in [u, 1.0] {
+        let xi = dir.scale(s * r / n);
+        let back = T::tau_inv(&T::tau(&xi))
+            .unwrap_or_else(|e| panic!("τ⁻¹(τ(ξ)) fails inside the radius, ‖ξ‖ = {}: {e}", s * r));
+        assert_small(
+            "τ⁻¹(τ(ξ)) = ξ inside INVERTIBLE_RADIUS",
+            vec_diff(&back, &xi),
+            1e-8 * (1.0 + xi.norm_max()),
+        );
+    }
+}
+
 /// A τ map: τ(ξ)τ(−ξ) = e, τ⁻¹(τ(ξ)) = ξ, d^L τ and d^R τ against finite differences, their
 /// inverses, and the duals as transposes.
 pub fn check_tau<G: LieGroup, T: Tau<G>>(a: &G::Algebra, mu: &G::Algebra) {
@@ -423,12 +444,16 @@ macro_rules! tau_suite {
             #[allow(unused_imports)]
             use super::*;
             use $crate::testing::proptest::prelude::*;
-            use $crate::testing::{algebra, check_tau};
+            use $crate::testing::{algebra, check_invertible_radius, check_tau};
             $crate::testing::proptest::proptest! {
                 #![proptest_config(ProptestConfig::with_cases(48))]
                 #[test]
                 fn tau_inverts_and_tangents_match_finite_differences(a in algebra::<$G>($scale), mu in algebra::<$G>(1.0)) {
                     check_tau::<$G, $T>(&a, &mu);
+                }
+                #[test]
+                fn tau_round_trips_inside_its_invertible_radius(dir in algebra::<$G>(1.0), u in 0.0..=1.0f64) {
+                    check_invertible_radius::<$G, $T>(&dir, u);
                 }
             }
         }

@@ -43,18 +43,22 @@ impl RigidBody {
 
 impl System<So3> for RigidBody {
     /// `h(Π) = ½ Π·𝕀⁻¹Π`.
+    #[inline]
     fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
         self.inner.hamiltonian(mu)
     }
     /// Ω = 𝕀⁻¹Π.
+    #[inline]
     fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
         self.inner.velocity(mu)
     }
     /// 𝕀⁻¹.
+    #[inline]
     fn hessian(&self, mu: &Vector3<f64>) -> Matrix3<f64> {
         self.inner.hessian(mu)
     }
     /// Π = 𝕀Ω.
+    #[inline]
     fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {
         self.inner.momentum(xi)
     }
