@@ -20,6 +20,8 @@
 //! step = 0.01                       # h > 0
 //! duration = 100.0                  # T > 0; ⌈T/h⌉ steps, the last one shortened to land on T
 //! reconstruct = true                # integrate g as well as μ (default true)
+//! # solver = "simplified-newton"    # implicit solver: simplified-newton (default) | newton |
+//! #                                   #   newton-fd | fixed-point
 //! # tolerance = 1e-14               # implicit solver options (default: the integrators crate's)
 //! # max_iterations = 50
 //! # composition = "kahan-li-6"      # optional: compose the θ = ½ method to order 4, 6, 8, … (below)
@@ -163,6 +165,20 @@ impl fmt::Display for Method {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
     }
+}
+
+/// The iteration that solves the implicit step equations (`integrators::SolverKind`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SolverChoice {
+    /// Simplified Newton: one analytic Jacobian per step (the default).
+    SimplifiedNewton,
+    /// Newton with the analytic Jacobian at every iterate.
+    Newton,
+    /// Newton with a finite-difference Jacobian.
+    NewtonFd,
+    /// Fixed-point iteration.
+    FixedPoint,
 }
 
 /// The τ map of the retraction g τ(ξ).
@@ -358,6 +374,8 @@ pub struct RawIntegrator {
     pub duration: f64,
     /// Integrate the group element too (default true).
     pub reconstruct: Option<bool>,
+    /// The iteration of the implicit solver (default: the integrators crate's).
+    pub solver: Option<SolverChoice>,
     /// Tolerance of the implicit solver (default: the integrators crate's).
     pub tolerance: Option<f64>,
     /// Iteration limit of the implicit solver (default: the integrators crate's).
@@ -548,6 +566,8 @@ impl System {
 /// Options of the implicit solver, passed to the integrators crate where it takes them.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SolverOptions {
+    /// The iteration.
+    pub kind: Option<SolverChoice>,
     /// Residual tolerance.
     pub tolerance: Option<f64>,
     /// Iteration limit.
@@ -732,6 +752,7 @@ impl Scene {
             system,
             method,
             solver: SolverOptions {
+                kind: it.solver,
                 tolerance: it.tolerance,
                 max_iterations: it.max_iterations,
             },

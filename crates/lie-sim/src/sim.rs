@@ -8,7 +8,8 @@
 
 use crate::error::SimError;
 use crate::scene::{
-    euler_arnold_needs_kinetic, GeodesicSoN, Method, MethodSpec, SolverOptions, System, TauKind,
+    euler_arnold_needs_kinetic, GeodesicSoN, Method, MethodSpec, SolverChoice, SolverOptions,
+    System, TauKind,
 };
 use faer::{Col, Mat};
 use integrators::systems::{
@@ -17,7 +18,7 @@ use integrators::systems::{
 };
 use integrators::{
     Composition, CompositionScheme, EulerArnold, EulerPoincare, Integrator, IntegratorError,
-    LiePoisson, QuaternionRk4, Rkmk4, SolverConfig, StateSnapshot, SymmetricMethod,
+    LiePoisson, QuaternionRk4, Rkmk4, SolverConfig, SolverKind, StateSnapshot, SymmetricMethod,
 };
 use lie_groups::{
     Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Operator, Se2, Se3, So2, So3,
@@ -148,6 +149,14 @@ pub fn dispatch<J: Job>(
         _ => {}
     }
     let mut config = SolverConfig::default();
+    if let Some(kind) = solver.kind {
+        config.kind = match kind {
+            SolverChoice::SimplifiedNewton => SolverKind::SimplifiedNewton,
+            SolverChoice::Newton => SolverKind::Newton,
+            SolverChoice::NewtonFd => SolverKind::NewtonFiniteDifference,
+            SolverChoice::FixedPoint => SolverKind::FixedPoint,
+        };
+    }
     if let Some(t) = solver.tolerance {
         config.tolerance = t;
     }

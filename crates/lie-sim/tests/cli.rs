@@ -425,6 +425,45 @@ fn good_scene_used_by_the_rejection_tests_runs() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// Every `solver` choice runs and solves the same step equations to the same tolerance: the
+/// CSVs agree entry by entry to 1e-12 (the solvers stop at 1e-14 relative in ξ).
+#[test]
+fn every_solver_choice_runs_and_the_trajectories_agree() {
+    let dir = temp_dir("solvers");
+    let mut runs = vec![];
+    for s in ["simplified-newton", "newton", "newton-fd", "fixed-point"] {
+        let scene = GOOD.replace(
+            "duration = 0.3",
+            &format!("duration = 0.3\nsolver = \"{s}\""),
+        );
+        std::fs::write(dir.join("s.toml"), scene).unwrap();
+        let out = format!("{s}.csv");
+        let o = lie_sim(&["run", "s.toml", "--out", &out], &dir);
+        assert!(o.status.success(), "{s}: {}", stderr(&o));
+        runs.push((s, Csv::read(&dir.join(out))));
+    }
+    let (_, reference) = &runs[0];
+    for (s, csv) in &runs[1..] {
+        assert_eq!(csv.header, reference.header, "{s}");
+        assert_eq!(csv.rows.len(), reference.rows.len(), "{s}");
+        for (a, b) in csv
+            .rows
+            .iter()
+            .flatten()
+            .zip(reference.rows.iter().flatten())
+        {
+            assert!((a - b).abs() <= 1e-12 * (1.0 + b.abs()), "{s}: {a} vs {b}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn unknown_solver_is_an_error_naming_the_field() {
+    let bad = GOOD.replace("duration = 0.3", "duration = 0.3\nsolver = \"bisection\"");
+    assert_rejected("unknown-solver", &bad, &["integrator.solver", "bisection"]);
+}
+
 #[test]
 fn missing_scene_file_is_an_error_naming_the_file() {
     let dir = temp_dir("missing");
