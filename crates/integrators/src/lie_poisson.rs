@@ -174,7 +174,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
             Some(ta) => ta.coadjoint_apply(&self.mu),
             None => self.mu.clone(),
         };
-        if let Some(gk) = self.g.as_ref() {
+        if let (Some(gk), true) = (self.g.as_ref(), self.system.has_potential()) {
             let gbar = ta_ref.map(|ta| gk.compose(ta));
             if let Some(f) = force(&self.system, Some(gbar.as_ref().unwrap_or(gk))) {
                 nu = nu.axpy(h, &f);

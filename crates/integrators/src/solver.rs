@@ -94,10 +94,10 @@ pub fn operator_from_columns<G: LieGroup>(
     lie_groups::matrix_path::operator_from_column_fn::<G>(col)
 }
 
-/// The operator `δ ↦ ad*_δ μ` (linear in δ; antisymmetric: its transpose is `η ↦ −ad*_η μ`).
+/// The operator `δ ↦ ad*_δ μ` ([`LieGroup::ad_dual_operator`], closed form where the group has one).
+#[inline]
 pub fn ad_dual_operator<G: LieGroup>(mu: &G::Algebra) -> G::Operator {
-    let n = G::dim();
-    operator_from_columns::<G>(n, |j| G::ad_dual_apply(&G::Algebra::basis(n, j), mu))
+    G::ad_dual_operator(mu)
 }
 
 /// Observed contraction above which [`SolverKind::SimplifiedNewton`] re-evaluates its Jacobian.

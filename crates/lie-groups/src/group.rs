@@ -80,6 +80,16 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
     fn ad_dual_apply(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
         Self::ad(xi).apply_transpose(mu)
     }
+    /// The operator `M(μ): δ ↦ ad*_δ μ` (linear in δ), the derivative in ξ of ad*_ξ μ that
+    /// Newton Jacobians of the Lie–Poisson step are built from. The provided form applies
+    /// [`LieGroup::ad_dual_apply`] to the basis vectors; groups override it with a closed form
+    /// (on SO(3), `ad*_δ μ = μ × δ`, so M(μ) = μ̂).
+    fn ad_dual_operator(mu: &Self::Algebra) -> Self::Operator {
+        let n = Self::dim();
+        crate::matrix_path::operator_from_column_fn::<Self>(|j| {
+            Self::ad_dual_apply(&Self::Algebra::basis(n, j), mu)
+        })
+    }
     /// `d^L exp_ξ = Σ_k (−ad_ξ)^k / (k+1)! = (I − e^{−ad_ξ}) / ad_ξ`.
     ///
     /// The provided form evaluates the series exactly through one block matrix exponential,
@@ -143,10 +153,7 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
 /// with `τ(ξ) = exp(ξ) + O(ξ³)` (exp and Cayley), the default of
 /// [`LieGroup::dexp_left_dual_derivative`] and [`crate::CayleyGroup::dcay_left_dual_derivative`].
 pub(crate) fn half_ad_dual_operator<G: LieGroup>(mu: &G::Algebra) -> G::Operator {
-    let n = G::dim();
-    crate::matrix_path::operator_from_column_fn::<G>(|j| {
-        G::ad_dual_apply(&G::Algebra::basis(n, j), mu).scale(-0.5)
-    })
+    G::ad_dual_operator(mu).scale(-0.5)
 }
 
 /// An n×n operator of NaNs: what a tangent-map inverse returns outside its domain.

@@ -514,6 +514,11 @@ impl LieGroup for So3 {
     fn adjoint_inverse_apply(&self, xi: &Vector3<f64>) -> Vector3<f64> {
         self.r.tr_mul(xi)
     }
+    /// `M(μ): δ ↦ ad*_δ μ = μ × δ`, i.e. μ̂.
+    #[inline]
+    fn ad_dual_operator(mu: &Vector3<f64>) -> Matrix3<f64> {
+        skew(mu)
+    }
     /// `Ad*_R μ = Rᵀ μ`.
     #[inline]
     fn coadjoint_apply(&self, mu: &Vector3<f64>) -> Vector3<f64> {

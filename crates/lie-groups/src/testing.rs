@@ -216,6 +216,12 @@ pub fn check_adjoint<G: LieGroup>(a: &G::Algebra, b: &G::Algebra, c: &G::Algebra
         (lhs - rhs).abs(),
         1e-12 * s2 * (1.0 + b.norm()),
     );
+    // M(μ) δ = ad*_δ μ
+    assert_small(
+        "ad_dual_operator(μ) δ = ad*_δ μ",
+        vec_diff(&G::ad_dual_operator(c).apply(a), &G::ad_dual_apply(a, c)),
+        1e-12 * s2 * (1.0 + a.norm()) * (1.0 + c.norm()),
+    );
 }
 
 /// The left-trivialized tangent of η ↦ f(ξ + η) by central differences:
