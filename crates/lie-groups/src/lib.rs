@@ -51,7 +51,7 @@ mod vector;
 #[cfg(feature = "testing")]
 pub mod testing;
 
-pub use error::LieError;
+pub use error::{DomainReason, LieError, StructureCheck};
 pub use group::{nan_operator, Action, LieGroup};
 pub use matrix::{GlN, SoN};
 pub use operator::{DenseMatrix, Operator};

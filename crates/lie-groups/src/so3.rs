@@ -5,7 +5,7 @@
 //! - Every closed form below is written with θ = |ω| and carries a Taylor branch for small θ
 //!   (below [`SMALL_ANGLE`]), so that |ω| = 1e-8 and ω = 0 give full double precision and no 0/0.
 
-use crate::{Action, CayleyGroup, LieError, LieGroup};
+use crate::{Action, CayleyGroup, DomainReason, LieError, LieGroup};
 use nalgebra::{Matrix3, Vector3};
 
 /// Default tolerance of the checked constructors: `‖RᵀR − I‖_max ≤ 1e-9` and `|det R − 1| ≤ 1e-9`.
@@ -284,10 +284,7 @@ impl So3 {
         }
         let n = axis.norm();
         if n == 0.0 {
-            return Err(LieError::OutOfDomain {
-                map: "from_axis_angle",
-                reason: "the axis is the zero vector".into(),
-            });
+            return Err(LieError::OutOfDomain(DomainReason::ZeroAxis));
         }
         Ok(<Self as LieGroup>::exp(&(axis * (angle / n))))
     }
@@ -576,10 +573,9 @@ impl CayleyGroup for So3 {
         }
         let den = 1.0 + self.r.trace();
         if den <= 1e-14 {
-            return Err(LieError::OutOfDomain {
-                map: "cay⁻¹",
-                reason: format!("1 + tr R = {den:.3e}: a rotation by π has no Cayley coordinates"),
-            });
+            return Err(LieError::OutOfDomain(DomainReason::CayleyRotationByPi {
+                one_plus_trace: den,
+            }));
         }
         let (s, _) = self.sin_cos_parts();
         Ok(s * (4.0 / den))
