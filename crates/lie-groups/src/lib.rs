@@ -46,6 +46,7 @@ pub mod se3;
 pub mod so2;
 pub mod so3;
 mod tau;
+mod trig;
 mod vector;
 
 #[cfg(feature = "testing")]

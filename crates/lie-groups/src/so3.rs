@@ -116,13 +116,15 @@ pub(crate) fn rodrigues_apply(w: &Vector3<f64>, a: f64, b: f64, v: &Vector3<f64>
     v + wv * a + w.cross(&wv) * b
 }
 
-/// The two coefficients of `exp`, `(sin θ/θ, (1 − cos θ)/θ²)`, from ONE `sin_cos(θ/2)` and no
-/// division after it (the fastest form, used only by `So3::exp`).
+/// The two coefficients of `exp`, `(sin θ/θ, (1 − cos θ)/θ²)`, from ONE sine–cosine pair of θ/2
+/// and no division after it (the fastest form, used only by `So3::exp`).
 ///
 /// With h = θ/2 (halving is exact): `sin θ/θ = 2 (sin h/θ) cos h` and `(1 − cos θ)/θ² =
 /// 2 (sin h/θ)²`: products only, so no cancellation anywhere (also near θ = π and beyond), and
-/// each coefficient is within a few ulp relative. `1/θ` is taken before `sin_cos` and overlaps
-/// with it. Below [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Horner form with
+/// each coefficient is within a few ulp relative. `1/θ` is taken before the sine and cosine and
+/// overlaps with them. For θ ≤ π (h ≤ π/2, every principal rotation vector) sin h and cos h
+/// come from inlined polynomial kernels (`trig::sin_cos_quadrant`, within 1 ulp, no libm call);
+/// beyond π from libm. Below [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Horner form with
 /// reciprocal coefficients (one rounding more per term than dividing, i.e. ≤ 1e-17 absolute
 /// there), which also avoids 1/θ at θ = 0.
 #[inline]
@@ -139,7 +141,7 @@ fn exp_coeffs(t2: f64) -> (f64, f64) {
     } else {
         let t = t2.sqrt();
         let inv_t = 1.0 / t;
-        let (sh, ch) = (0.5 * t).sin_cos();
+        let (sh, ch) = crate::trig::sin_cos_quadrant(0.5 * t);
         let q = sh * inv_t;
         (2.0 * q * ch, 2.0 * q * q)
     }
@@ -301,10 +303,36 @@ impl So3 {
         s.norm().atan2(c)
     }
 
-    /// The c < 0 branch of `log` (θ ∈ (π/2, π]), see the `log` docs: θ = atan2(|s|, c), axis from
-    /// the largest column of the symmetric part, sign from s. Out of line: it is the rare case.
+    /// The rare cases of `log`, out of line: non-finite entries ([`LieError::NonFinite`]),
+    /// entries so large that |s|² + c overflows (not a rotation; the formulas below are applied
+    /// as they are), and c < 0 (θ ∈ (π/2, π], see [`So3::log_obtuse`]); c ≥ 0 repeats the fast
+    /// path's formulas on |s|.
     #[cold]
     #[inline(never)]
+    fn log_rare(&self) -> Result<Vector3<f64>, LieError> {
+        let (s, c) = self.sin_cos_parts();
+        if !self.is_finite() {
+            return Err(LieError::NonFinite {
+                what: "rotation matrix",
+            });
+        }
+        let sn = s.norm();
+        if c >= 0.0 {
+            if sn == 0.0 {
+                return Ok(s);
+            }
+            let theta = if sn <= c {
+                sn.min(1.0).asin()
+            } else {
+                c.min(1.0).acos()
+            };
+            return Ok(s * (theta / sn));
+        }
+        Ok(self.log_obtuse(&s, sn, c))
+    }
+
+    /// The c < 0 branch of `log` (θ ∈ (π/2, π]), see the `log` docs: θ = atan2(|s|, c), axis from
+    /// the largest column of the symmetric part, sign from s.
     fn log_obtuse(&self, s: &Vector3<f64>, sn: f64, c: f64) -> Vector3<f64> {
         let theta = sn.atan2(c);
         // θ > π/2: B = (1 − c) n nᵀ from the symmetric part; its largest diagonal entry is ≥ (1 − c)/3.
@@ -396,8 +424,8 @@ impl LieGroup for So3 {
     /// Rodrigues: `exp(ω) = I + (sin θ/θ) ω̂ + ((1 − cos θ)/θ²) ω̂²`, θ = |ω| (any θ, also > π).
     #[inline]
     ///
-    /// One `sin_cos(θ/2)`, one square root and one division, taken before the `sin_cos` so that
-    /// it overlaps with it ([`exp_coeffs`]); the matrix is assembled entry by entry
+    /// One sine–cosine pair of θ/2 (inlined polynomials for θ ≤ π), one square root and one
+    /// division, taken before the sine and cosine so that it overlaps with them ([`exp_coeffs`]); the matrix is assembled entry by entry
     /// ([`rodrigues_matrix`]).
     fn exp(w: &Vector3<f64>) -> Self {
         let (a, b) = exp_coeffs(w.norm_squared());
@@ -418,34 +446,35 @@ impl LieGroup for So3 {
     /// Speed: for c ≥ 0 (θ ≤ π/2, the common case) θ is `asin |s|` when |s| ≤ c (θ ≤ π/4, where
     /// asin has slope ≤ √2) and `acos c` otherwise (θ ∈ (π/4, π/2], slope ≤ √2): each is a cheaper
     /// libm call than atan2 and just as accurate there (arguments clamped to ≤ 1, so a drifted
-    /// matrix cannot produce NaN). The c < 0 branch (θ > π/2, including the near-π case) keeps
-    /// atan2 and lives in a separate cold function, so the fast path inlines.
-    #[inline]
+    /// matrix cannot produce NaN). The branch is chosen on |s|² ≤ c², so that `acos c` does not
+    /// wait for the square root, and `1/|s|` is taken before the libm call and overlaps with it.
+    /// One finiteness test on |s|² + c covers every entry; everything else (non-finite or huge
+    /// entries, c < 0 including the near-π case) is in a separate cold function, so the fast path
+    /// inlines and the result is written straight into the caller's slot.
+    #[inline(always)]
     fn log(&self) -> Result<Vector3<f64>, LieError> {
         let (s, c) = self.sin_cos_parts();
-        // Every entry of R enters s or c through + or −, so a non-finite entry makes s or c
-        // non-finite: four checks instead of nine. (s or c can also overflow from huge finite
-        // entries; the full check then decides, as before.)
-        let parts_finite = s.x.is_finite() && s.y.is_finite() && s.z.is_finite() && c.is_finite();
-        if !(parts_finite || self.is_finite()) {
-            return Err(LieError::NonFinite {
-                what: "rotation matrix",
-            });
-        }
-        let sn = s.norm();
-        if c >= 0.0 {
-            // θ ≤ π/2: |s| = sin θ is a well-conditioned measure of the axis.
-            if sn == 0.0 {
+        let sn2 = s.norm_squared();
+        // Every entry of R enters s or c through + or −, so a NaN or an infinity in R makes
+        // |s|² + c NaN or +∞ (so can an overflow from huge finite entries: the cold path decides);
+        // `≤ f64::MAX` is false for both.
+        if c >= 0.0 && sn2 + c <= f64::MAX {
+            if sn2 > c * c {
+                // θ ∈ (π/4, π/2]: sn > 0 here.
+                let inv_sn = 1.0 / sn2.sqrt();
+                let theta = c.min(1.0).acos();
+                return Ok(s * (theta * inv_sn));
+            }
+            // θ ≤ π/4: |s| = sin θ is a well-conditioned measure of the angle.
+            if sn2 == 0.0 {
                 return Ok(s);
             }
-            let theta = if sn <= c {
-                sn.min(1.0).asin()
-            } else {
-                c.min(1.0).acos()
-            };
-            return Ok(s * (theta / sn));
+            let sn = sn2.sqrt();
+            let inv_sn = 1.0 / sn;
+            let theta = sn.min(1.0).asin();
+            return Ok(s * (theta * inv_sn));
         }
-        Ok(self.log_obtuse(&s, sn, c))
+        self.log_rare()
     }
     #[inline]
     fn hat(w: &Vector3<f64>) -> Matrix3<f64> {
