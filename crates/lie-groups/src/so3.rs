@@ -5,7 +5,7 @@
 //! - Every closed form below is written with θ = |ω| and carries a Taylor branch for small θ
 //!   (below [`SMALL_ANGLE`]), so that |ω| = 1e-8 and ω = 0 give full double precision and no 0/0.
 
-use crate::{Action, CayleyGroup, DomainReason, LieError, LieGroup};
+use crate::{trig, Action, CayleyGroup, DomainReason, LieError, LieGroup};
 use nalgebra::{Matrix3, Vector3};
 
 /// Default tolerance of the checked constructors: `‖RᵀR − I‖_max ≤ 1e-9` and `|det R − 1| ≤ 1e-9`.
@@ -116,6 +116,9 @@ pub(crate) fn rodrigues_apply(w: &Vector3<f64>, a: f64, b: f64, v: &Vector3<f64>
     v + wv * a + w.cross(&wv) * b
 }
 
+/// (π/2)²: below it `exp_coeffs` evaluates the half-angle kernels on θ²/4 directly.
+const HALF_PI_SQ: f64 = core::f64::consts::FRAC_PI_2 * core::f64::consts::FRAC_PI_2;
+
 /// The two coefficients of `exp`, `(sin θ/θ, (1 − cos θ)/θ²)`, from ONE sine–cosine pair of θ/2
 /// and no division after it (the fastest form, used only by `So3::exp`).
 ///
@@ -124,7 +127,8 @@ pub(crate) fn rodrigues_apply(w: &Vector3<f64>, a: f64, b: f64, v: &Vector3<f64>
 /// each coefficient is within a few ulp relative. `1/θ` is taken before the sine and cosine and
 /// overlaps with them. For θ ≤ π (h ≤ π/2, every principal rotation vector) sin h and cos h
 /// come from inlined polynomial kernels (`trig::sin_cos_quadrant`, within 1 ulp, no libm call);
-/// beyond π from libm. Below [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Horner form with
+/// beyond π from libm. For θ ≤ π/2 even the square root and 1/θ go: `sin h/θ` and `cos h` are
+/// even functions of h, evaluated from h² = θ²/4 (`trig::half_sinc_cos`). Below [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Horner form with
 /// reciprocal coefficients (one rounding more per term than dividing, i.e. ≤ 1e-17 absolute
 /// there), which also avoids 1/θ at θ = 0.
 #[inline]
@@ -138,10 +142,14 @@ fn exp_coeffs(t2: f64) -> (f64, f64) {
             + t2 * (-1.0 / 24.0
                 + t2 * (1.0 / 720.0 + t2 * (-1.0 / 40320.0 + t2 * (1.0 / 3628800.0))));
         (a, b)
+    } else if t2 <= HALF_PI_SQ {
+        // θ ≤ π/2: sin h/θ and cos h are even in h, so both come from h² = θ²/4 (exact).
+        let (q, ch) = trig::half_sinc_cos(0.25 * t2);
+        (2.0 * q * ch, 2.0 * q * q)
     } else {
         let t = t2.sqrt();
         let inv_t = 1.0 / t;
-        let (sh, ch) = crate::trig::sin_cos_quadrant(0.5 * t);
+        let (sh, ch) = trig::sin_cos_quadrant(0.5 * t);
         let q = sh * inv_t;
         (2.0 * q * ch, 2.0 * q * q)
     }
@@ -365,7 +373,7 @@ impl So3 {
                 r[(0, 2)] - r[(2, 0)],
                 r[(1, 0)] - r[(0, 1)],
             );
-        let c = 0.5 * (r.trace() - 1.0);
+        let c = 0.5 * ((r[(0, 0)] + r[(1, 1)] + r[(2, 2)]) - 1.0);
         (s, c)
     }
 }
@@ -443,14 +451,19 @@ impl LieGroup for So3 {
     /// valid answers ±π n (the one whose largest component is positive). Never NaN for a rotation;
     /// [`LieError::NonFinite`] for non-finite input.
     ///
-    /// Speed: for c ≥ 0 (θ ≤ π/2, the common case) θ is `asin |s|` when |s| ≤ c (θ ≤ π/4, where
-    /// asin has slope ≤ √2) and `acos c` otherwise (θ ∈ (π/4, π/2], slope ≤ √2): each is a cheaper
-    /// libm call than atan2 and just as accurate there (arguments clamped to ≤ 1, so a drifted
-    /// matrix cannot produce NaN). The branch is chosen on |s|² ≤ c², so that `acos c` does not
-    /// wait for the square root, and `1/|s|` is taken before the libm call and overlaps with it.
-    /// One finiteness test on |s|² + c covers every entry; everything else (non-finite or huge
-    /// entries, c < 0 including the near-π case) is in a separate cold function, so the fast path
-    /// inlines and the result is written straight into the caller's slot.
+    /// Speed: for c ≥ 0 (θ ≤ π/2, the common case) there is no libm call. With the fdlibm
+    /// rational fit `asin x = x + x R(x²)` on |x| ≤ ½ (`trig::asin_half`, `trig::acos_half`, within
+    /// 1 ulp), three bands, each where its formula has slope ≤ 2 in its input:
+    /// - |s| ≤ ½ (θ ≤ π/6): `θ/|s| = asin|s|/|s| = 1 + R(|s|²)`, so ω = (1 + R(|s|²)) s — no
+    ///   square root, no special case at s = 0;
+    /// - c ≤ ½ (θ ≥ π/3): θ = acos c;
+    /// - otherwise (θ ∈ (π/6, π/3)): θ = acos c = 2 asin √((1 − c)/2), where `1 − c` is exact
+    ///   (c ∈ [½, 1]) and √((1 − c)/2) < ½;
+    ///
+    /// then ω = (θ/|s|) s, `1/|s|` taken alongside the fit. One finiteness test on |s|² + c covers
+    /// every entry; everything else (non-finite or huge entries, c < 0 including the near-π case)
+    /// is in a separate cold function, so the fast path inlines and writes the result straight
+    /// into the caller's slot.
     #[inline(always)]
     fn log(&self) -> Result<Vector3<f64>, LieError> {
         let (s, c) = self.sin_cos_parts();
@@ -459,19 +472,16 @@ impl LieGroup for So3 {
         // |s|² + c NaN or +∞ (so can an overflow from huge finite entries: the cold path decides);
         // `≤ f64::MAX` is false for both.
         if c >= 0.0 && sn2 + c <= f64::MAX {
-            if sn2 > c * c {
-                // θ ∈ (π/4, π/2]: sn > 0 here.
-                let inv_sn = 1.0 / sn2.sqrt();
-                let theta = c.min(1.0).acos();
-                return Ok(s * (theta * inv_sn));
+            if sn2 <= 0.25 {
+                return Ok(s * (1.0 + trig::asin_ratio(sn2)));
             }
-            // θ ≤ π/4: |s| = sin θ is a well-conditioned measure of the angle.
-            if sn2 == 0.0 {
-                return Ok(s);
-            }
-            let sn = sn2.sqrt();
-            let inv_sn = 1.0 / sn;
-            let theta = sn.min(1.0).asin();
+            let inv_sn = 1.0 / sn2.sqrt();
+            let theta = if c <= 0.5 {
+                trig::acos_half(c)
+            } else {
+                // c > 1 only for a matrix far from SO(3) (|s| > ½ here): clamp to stay finite.
+                2.0 * trig::asin_half(((1.0 - c.min(1.0)) * 0.5).sqrt())
+            };
             return Ok(s * (theta * inv_sn));
         }
         self.log_rare()
