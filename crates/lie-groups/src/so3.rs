@@ -116,6 +116,11 @@ pub(crate) fn rodrigues_apply(w: &Vector3<f64>, a: f64, b: f64, v: &Vector3<f64>
     v + wv * a + w.cross(&wv) * b
 }
 
+/// Bit patterns of +∞ and ½: for c ≥ +0, `c.to_bits() < INFINITY_BITS` ⇔ c finite, and
+/// `c.to_bits() <= HALF_BITS` ⇔ c ≤ ½; negative c and NaN fail both.
+const INFINITY_BITS: u64 = f64::INFINITY.to_bits();
+const HALF_BITS: u64 = 0.5f64.to_bits();
+
 /// (π/2)²: below it `exp_coeffs` evaluates the half-angle kernels on θ²/4 directly.
 const HALF_PI_SQ: f64 = core::f64::consts::FRAC_PI_2 * core::f64::consts::FRAC_PI_2;
 
@@ -460,29 +465,34 @@ impl LieGroup for So3 {
     /// - otherwise (θ ∈ (π/6, π/3)): θ = acos c = 2 asin √((1 − c)/2), where `1 − c` is exact
     ///   (c ∈ [½, 1]) and √((1 − c)/2) < ½;
     ///
-    /// then ω = (θ/|s|) s, `1/|s|` taken alongside the fit. One finiteness test on |s|² + c covers
-    /// every entry; everything else (non-finite or huge entries, c < 0 including the near-π case)
+    /// then ω = (θ/|s|) s, `1/|s|` taken alongside the fit. The band tests also reject every
+    /// non-finite input (one integer compare on the bits of c); everything else (non-finite or huge entries, c < 0 including the near-π case)
     /// is in a separate cold function, so the fast path inlines and writes the result straight
     /// into the caller's slot.
     #[inline(always)]
     fn log(&self) -> Result<Vector3<f64>, LieError> {
         let (s, c) = self.sin_cos_parts();
         let sn2 = s.norm_squared();
-        // Every entry of R enters s or c through + or −, so a NaN or an infinity in R makes
-        // |s|² + c NaN or +∞ (so can an overflow from huge finite entries: the cold path decides);
-        // `≤ f64::MAX` is false for both.
-        if c >= 0.0 && sn2 + c <= f64::MAX {
+        // Every entry of R enters s or c through + or −, so a NaN or an infinity in R makes s or c
+        // non-finite. The tests below pass only for finite c ≥ +0 and finite |s|²: for c they
+        // compare bit patterns, which for non-negative doubles order like the values, while a
+        // negative c (sign bit set) and NaN compare above every finite positive pattern — one
+        // integer compare instead of `c >= 0.0 && c <= bound`.
+        let cb = c.to_bits();
+        if cb < INFINITY_BITS {
             if sn2 <= 0.25 {
                 return Ok(s * (1.0 + trig::asin_ratio(sn2)));
             }
-            let inv_sn = 1.0 / sn2.sqrt();
-            let theta = if c <= 0.5 {
-                trig::acos_half(c)
-            } else {
-                // c > 1 only for a matrix far from SO(3) (|s| > ½ here): clamp to stay finite.
-                2.0 * trig::asin_half(((1.0 - c.min(1.0)) * 0.5).sqrt())
-            };
-            return Ok(s * (theta * inv_sn));
+            if sn2 <= f64::MAX {
+                let inv_sn = 1.0 / sn2.sqrt();
+                let theta = if cb <= HALF_BITS {
+                    trig::acos_half(c)
+                } else {
+                    // c > 1 only for a matrix far from SO(3) (|s| > ½ here): clamp to stay finite.
+                    2.0 * trig::asin_half(((1.0 - c.min(1.0)) * 0.5).sqrt())
+                };
+                return Ok(s * (theta * inv_sn));
+            }
         }
         self.log_rare()
     }
