@@ -658,3 +658,54 @@ impl Action<Vector3<f64>> for So3 {
         self.r * p
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fast path of `log` decides finiteness from s and c alone: every entry, set to NaN, +∞
+    /// or −∞ in turn (on a small, a medium and a large rotation, i.e. in every band), must give
+    /// `NonFinite`, never `Ok`.
+    #[test]
+    fn log_rejects_every_non_finite_entry_in_every_band() {
+        for w in [
+            Vector3::new(0.01, 0.02, -0.03),
+            Vector3::new(0.3, -0.4, 0.5),
+            Vector3::new(0.6, -0.7, 1.1),
+        ] {
+            let r = *So3::exp(&w).as_matrix();
+            for k in 0..9 {
+                for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                    let mut m = r;
+                    m[k] = bad;
+                    let res = So3::from_matrix_unchecked(&m).log();
+                    assert!(
+                        matches!(res, Err(LieError::NonFinite { .. })),
+                        "entry {k} = {bad}, ω = {w:?}: {res:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// Round-off drift can push c = (tr R − 1)/2 just above 1 near the identity, or make the
+    /// matrix slightly non-orthogonal elsewhere: the result stays finite and close to the
+    /// rotation's log.
+    #[test]
+    fn log_of_drifted_rotations_is_finite_and_close() {
+        let mut m = Matrix3::identity();
+        m[(0, 0)] += 4e-16;
+        m[(1, 1)] += 4e-16;
+        let w = So3::from_matrix_unchecked(&m).log().unwrap();
+        assert!(w.iter().all(|x| x.is_finite()) && w.norm() < 1e-15);
+        for w in [
+            Vector3::new(0.2, 0.1, 0.0),
+            Vector3::new(0.5, 0.5, 0.5),
+            Vector3::new(1.0, 0.3, 0.9),
+        ] {
+            let m = So3::exp(&w).as_matrix() * (1.0 + 1e-12);
+            let back = So3::from_matrix_unchecked(&m).log().unwrap();
+            assert!((back - w).amax() < 1e-11, "{w:?} → {back:?}");
+        }
+    }
+}
