@@ -435,11 +435,13 @@ impl LieGroup for So3 {
         }
     }
     /// Rodrigues: `exp(ω) = I + (sin θ/θ) ω̂ + ((1 − cos θ)/θ²) ω̂²`, θ = |ω| (any θ, also > π).
-    #[inline]
     ///
-    /// One sine–cosine pair of θ/2 (inlined polynomials for θ ≤ π), one square root and one
-    /// division, taken before the sine and cosine so that it overlaps with them ([`exp_coeffs`]); the matrix is assembled entry by entry
-    /// ([`rodrigues_matrix`]).
+    /// The coefficients are `2 (sin h/θ) cos h` and `2 (sin h/θ)²` with h = θ/2 (`exp_coeffs`):
+    /// for θ ≤ π/2 from inlined polynomial kernels evaluated on h² = θ²/4 (no square root, no
+    /// division, no libm call), for θ ≤ π from the same kernels on the reduced angle, beyond π
+    /// from libm, and below θ = 0.1 from their Taylor series. The matrix is assembled entry by
+    /// entry with ω̂² = ωωᵀ − θ²I (`rodrigues_matrix`).
+    #[inline]
     fn exp(w: &Vector3<f64>) -> Self {
         let (a, b) = exp_coeffs(w.norm_squared());
         Self {
@@ -466,9 +468,9 @@ impl LieGroup for So3 {
     ///   (c ∈ [½, 1]) and √((1 − c)/2) < ½;
     ///
     /// then ω = (θ/|s|) s, `1/|s|` taken alongside the fit. The band tests also reject every
-    /// non-finite input (one integer compare on the bits of c); everything else (non-finite or huge entries, c < 0 including the near-π case)
-    /// is in a separate cold function, so the fast path inlines and writes the result straight
-    /// into the caller's slot.
+    /// non-finite input (one integer compare on the bits of c); everything else (non-finite or
+    /// huge entries, c < 0 including the near-π case) is in a separate cold function, so the fast
+    /// path inlines and writes the result straight into the caller's slot.
     #[inline(always)]
     fn log(&self) -> Result<Vector3<f64>, LieError> {
         let (s, c) = self.sin_cos_parts();
@@ -557,9 +559,9 @@ impl LieGroup for So3 {
         mu.cross(xi)
     }
     /// `d^L exp_ω = I − ((1 − cos θ)/θ²) ω̂ + ((θ − sin θ)/θ³) ω̂²` (the right Jacobian J_r).
-    #[inline]
     ///
-    /// One `sin_cos(θ)` for both coefficients ([`rodrigues_coeffs`]), matrix entry by entry.
+    /// One `sin_cos(θ)` for both coefficients (`rodrigues_coeffs`), matrix entry by entry.
+    #[inline]
     fn dexp_left(w: &Vector3<f64>) -> Matrix3<f64> {
         let (_, b, c) = rodrigues_coeffs(w.norm_squared());
         rodrigues_matrix(w, -b, c)
