@@ -46,12 +46,13 @@ pub mod se3;
 pub mod so2;
 pub mod so3;
 mod tau;
+mod trig;
 mod vector;
 
 #[cfg(feature = "testing")]
 pub mod testing;
 
-pub use error::LieError;
+pub use error::{DomainReason, LieError, StructureCheck};
 pub use group::{nan_operator, Action, LieGroup};
 pub use matrix::{GlN, SoN};
 pub use operator::{DenseMatrix, Operator};

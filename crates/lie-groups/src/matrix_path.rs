@@ -5,7 +5,7 @@
 //! independent reference the closed forms are tested against. None of these are hot paths.
 
 use crate::matrix::dense::{expm, try_inverse, try_solve};
-use crate::{DenseMatrix, LieError, LieGroup, Operator, Vector};
+use crate::{DenseMatrix, DomainReason, LieError, LieGroup, Operator, Vector};
 use faer::{Mat, MatRef};
 
 fn hat_mat<G: LieGroup>(xi: &G::Algebra) -> Mat<f64> {
@@ -91,10 +91,8 @@ pub fn cay_inv<G: LieGroup>(g: &G) -> Result<G::Algebra, LieError> {
     let id = Mat::<f64>::identity(m, m);
     let plus = &gm + &id;
     let minus = &gm - &id;
-    let inv = try_inverse(plus.as_ref()).ok_or_else(|| LieError::OutOfDomain {
-        map: "cay⁻¹",
-        reason: "g + I is singular (g has eigenvalue −1)".into(),
-    })?;
+    let inv = try_inverse(plus.as_ref())
+        .ok_or(LieError::OutOfDomain(DomainReason::EigenvalueMinusOne))?;
     let a = &minus * &inv;
     Ok(vee_mat::<G>(
         Mat::from_fn(m, m, |i, j| 2.0 * a[(i, j)]).as_ref(),

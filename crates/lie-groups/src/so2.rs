@@ -6,7 +6,7 @@
 //! - Algebra 𝔰𝔬(2) ≅ ℝ: `ξ = (ω)` with `ξ̂ = ω J`, `J = [[0, −1], [1, 0]]`.
 //! - The group is abelian: `Ad_g = 1`, `ad_ξ = 0`, `d^L exp_ξ = 1`.
 
-use crate::{Action, CayleyGroup, LieError, LieGroup};
+use crate::{Action, CayleyGroup, DomainReason, LieError, LieGroup};
 use core::f64::consts::PI;
 use nalgebra::{Matrix1, Matrix2, SVector, UnitComplex, Vector1, Vector2};
 
@@ -269,10 +269,9 @@ impl CayleyGroup for So2 {
     fn cay_inv(&self) -> Result<Vector1<f64>, LieError> {
         let d = 1.0 + self.c;
         if !self.is_finite() || d < CAY_INV_MIN {
-            return Err(LieError::OutOfDomain {
-                map: "cay⁻¹",
-                reason: format!("1 + cos θ = {d:.3e}: rotation at (or near) the half turn"),
-            });
+            return Err(LieError::OutOfDomain(DomainReason::CayleyHalfTurn {
+                one_plus_cos: d,
+            }));
         }
         Ok(Vector1::new(2.0 * self.s / d))
     }

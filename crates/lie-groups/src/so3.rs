@@ -5,7 +5,7 @@
 //! - Every closed form below is written with θ = |ω| and carries a Taylor branch for small θ
 //!   (below [`SMALL_ANGLE`]), so that |ω| = 1e-8 and ω = 0 give full double precision and no 0/0.
 
-use crate::{Action, CayleyGroup, LieError, LieGroup};
+use crate::{trig, Action, CayleyGroup, DomainReason, LieError, LieGroup};
 use nalgebra::{Matrix3, Vector3};
 
 /// Default tolerance of the checked constructors: `‖RᵀR − I‖_max ≤ 1e-9` and `|det R − 1| ≤ 1e-9`.
@@ -133,13 +133,24 @@ pub(crate) fn rodrigues_apply(w: &Vector3<f64>, a: f64, b: f64, v: &Vector3<f64>
     v + wv * a + w.cross(&wv) * b
 }
 
-/// The two coefficients of `exp`, `(sin θ/θ, (1 − cos θ)/θ²)`, from ONE `sin_cos(θ/2)` and no
-/// division after it (the fastest form, used only by `So3::exp`).
+/// Bit patterns of +∞ and ½: for c ≥ +0, `c.to_bits() < INFINITY_BITS` ⇔ c finite, and
+/// `c.to_bits() <= HALF_BITS` ⇔ c ≤ ½; negative c and NaN fail both.
+const INFINITY_BITS: u64 = f64::INFINITY.to_bits();
+const HALF_BITS: u64 = 0.5f64.to_bits();
+
+/// (π/2)²: below it `exp_coeffs` evaluates the half-angle kernels on θ²/4 directly.
+const HALF_PI_SQ: f64 = core::f64::consts::FRAC_PI_2 * core::f64::consts::FRAC_PI_2;
+
+/// The two coefficients of `exp`, `(sin θ/θ, (1 − cos θ)/θ²)`, from ONE sine–cosine pair of θ/2
+/// and no division after it (the fastest form, used only by `So3::exp`).
 ///
 /// With h = θ/2 (halving is exact): `sin θ/θ = 2 (sin h/θ) cos h` and `(1 − cos θ)/θ² =
 /// 2 (sin h/θ)²`: products only, so no cancellation anywhere (also near θ = π and beyond), and
-/// each coefficient is within a few ulp relative. `1/θ` is taken before `sin_cos` and overlaps
-/// with it. Below [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Horner form with
+/// each coefficient is within a few ulp relative. `1/θ` is taken before the sine and cosine and
+/// overlaps with them. For θ ≤ π (h ≤ π/2, every principal rotation vector) sin h and cos h
+/// come from inlined polynomial kernels (`trig::sin_cos_quadrant`, within 1 ulp, no libm call);
+/// beyond π from libm. For θ ≤ π/2 even the square root and 1/θ go: `sin h/θ` and `cos h` are
+/// even functions of h, evaluated from h² = θ²/4 (`trig::half_sinc_cos`). Below [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Horner form with
 /// reciprocal coefficients (one rounding more per term than dividing, i.e. ≤ 1e-17 absolute
 /// there), which also avoids 1/θ at θ = 0.
 #[inline]
@@ -153,10 +164,14 @@ fn exp_coeffs(t2: f64) -> (f64, f64) {
             + t2 * (-1.0 / 24.0
                 + t2 * (1.0 / 720.0 + t2 * (-1.0 / 40320.0 + t2 * (1.0 / 3628800.0))));
         (a, b)
+    } else if t2 <= HALF_PI_SQ {
+        // θ ≤ π/2: sin h/θ and cos h are even in h, so both come from h² = θ²/4 (exact).
+        let (q, ch) = trig::half_sinc_cos(0.25 * t2);
+        (2.0 * q * ch, 2.0 * q * q)
     } else {
         let t = t2.sqrt();
         let inv_t = 1.0 / t;
-        let (sh, ch) = (0.5 * t).sin_cos();
+        let (sh, ch) = trig::sin_cos_quadrant(0.5 * t);
         let q = sh * inv_t;
         (2.0 * q * ch, 2.0 * q * q)
     }
@@ -301,10 +316,7 @@ impl So3 {
         }
         let n = axis.norm();
         if n == 0.0 {
-            return Err(LieError::OutOfDomain {
-                map: "from_axis_angle",
-                reason: "the axis is the zero vector".into(),
-            });
+            return Err(LieError::OutOfDomain(DomainReason::ZeroAxis));
         }
         Ok(<Self as LieGroup>::exp(&(axis * (angle / n))))
     }
@@ -321,10 +333,36 @@ impl So3 {
         s.norm().atan2(c)
     }
 
-    /// The c < 0 branch of `log` (θ ∈ (π/2, π]), see the `log` docs: θ = atan2(|s|, c), axis from
-    /// the largest column of the symmetric part, sign from s. Out of line: it is the rare case.
+    /// The rare cases of `log`, out of line: non-finite entries ([`LieError::NonFinite`]),
+    /// entries so large that |s|² + c overflows (not a rotation; the formulas below are applied
+    /// as they are), and c < 0 (θ ∈ (π/2, π], see [`So3::log_obtuse`]); c ≥ 0 repeats the fast
+    /// path's formulas on |s|.
     #[cold]
     #[inline(never)]
+    fn log_rare(&self) -> Result<Vector3<f64>, LieError> {
+        let (s, c) = self.sin_cos_parts();
+        if !self.is_finite() {
+            return Err(LieError::NonFinite {
+                what: "rotation matrix",
+            });
+        }
+        let sn = s.norm();
+        if c >= 0.0 {
+            if sn == 0.0 {
+                return Ok(s);
+            }
+            let theta = if sn <= c {
+                sn.min(1.0).asin()
+            } else {
+                c.min(1.0).acos()
+            };
+            return Ok(s * (theta / sn));
+        }
+        Ok(self.log_obtuse(&s, sn, c))
+    }
+
+    /// The c < 0 branch of `log` (θ ∈ (π/2, π]), see the `log` docs: θ = atan2(|s|, c), axis from
+    /// the largest column of the symmetric part, sign from s.
     fn log_obtuse(&self, s: &Vector3<f64>, sn: f64, c: f64) -> Vector3<f64> {
         let theta = sn.atan2(c);
         // θ > π/2: B = (1 − c) n nᵀ from the symmetric part; its largest diagonal entry is ≥ (1 − c)/3.
@@ -357,7 +395,7 @@ impl So3 {
                 r[(0, 2)] - r[(2, 0)],
                 r[(1, 0)] - r[(0, 1)],
             );
-        let c = 0.5 * (r.trace() - 1.0);
+        let c = 0.5 * ((r[(0, 0)] + r[(1, 1)] + r[(2, 2)]) - 1.0);
         (s, c)
     }
 }
@@ -416,11 +454,13 @@ impl LieGroup for So3 {
         }
     }
     /// Rodrigues: `exp(ω) = I + (sin θ/θ) ω̂ + ((1 − cos θ)/θ²) ω̂²`, θ = |ω| (any θ, also > π).
-    #[inline]
     ///
-    /// One `sin_cos(θ/2)`, one square root and one division, taken before the `sin_cos` so that
-    /// it overlaps with it ([`exp_coeffs`]); the matrix is assembled entry by entry
-    /// ([`rodrigues_matrix`]).
+    /// The coefficients are `2 (sin h/θ) cos h` and `2 (sin h/θ)²` with h = θ/2 (`exp_coeffs`):
+    /// for θ ≤ π/2 from inlined polynomial kernels evaluated on h² = θ²/4 (no square root, no
+    /// division, no libm call), for θ ≤ π from the same kernels on the reduced angle, beyond π
+    /// from libm, and below θ = 0.1 from their Taylor series. The matrix is assembled entry by
+    /// entry with ω̂² = ωωᵀ − θ²I (`rodrigues_matrix`).
+    #[inline]
     fn exp(w: &Vector3<f64>) -> Self {
         let (a, b) = exp_coeffs(w.norm_squared());
         Self {
@@ -437,37 +477,45 @@ impl LieGroup for So3 {
     /// valid answers ±π n (the one whose largest component is positive). Never NaN for a rotation;
     /// [`LieError::NonFinite`] for non-finite input.
     ///
-    /// Speed: for c ≥ 0 (θ ≤ π/2, the common case) θ is `asin |s|` when |s| ≤ c (θ ≤ π/4, where
-    /// asin has slope ≤ √2) and `acos c` otherwise (θ ∈ (π/4, π/2], slope ≤ √2): each is a cheaper
-    /// libm call than atan2 and just as accurate there (arguments clamped to ≤ 1, so a drifted
-    /// matrix cannot produce NaN). The c < 0 branch (θ > π/2, including the near-π case) keeps
-    /// atan2 and lives in a separate cold function, so the fast path inlines.
-    #[inline]
+    /// Speed: for c ≥ 0 (θ ≤ π/2, the common case) there is no libm call. With the fdlibm
+    /// rational fit `asin x = x + x R(x²)` on |x| ≤ ½ (`trig::asin_half`, `trig::acos_half`, within
+    /// 1 ulp), three bands, each where its formula has slope ≤ 2 in its input:
+    /// - |s| ≤ ½ (θ ≤ π/6): `θ/|s| = asin|s|/|s| = 1 + R(|s|²)`, so ω = (1 + R(|s|²)) s — no
+    ///   square root, no special case at s = 0;
+    /// - c ≤ ½ (θ ≥ π/3): θ = acos c;
+    /// - otherwise (θ ∈ (π/6, π/3)): θ = acos c = 2 asin √((1 − c)/2), where `1 − c` is exact
+    ///   (c ∈ [½, 1]) and √((1 − c)/2) < ½;
+    ///
+    /// then ω = (θ/|s|) s, `1/|s|` taken alongside the fit. The band tests also reject every
+    /// non-finite input (one integer compare on the bits of c); everything else (non-finite or
+    /// huge entries, c < 0 including the near-π case) is in a separate cold function, so the fast
+    /// path inlines and writes the result straight into the caller's slot.
+    #[inline(always)]
     fn log(&self) -> Result<Vector3<f64>, LieError> {
         let (s, c) = self.sin_cos_parts();
-        // Every entry of R enters s or c through + or −, so a non-finite entry makes s or c
-        // non-finite: four checks instead of nine. (s or c can also overflow from huge finite
-        // entries; the full check then decides, as before.)
-        let parts_finite = s.x.is_finite() && s.y.is_finite() && s.z.is_finite() && c.is_finite();
-        if !(parts_finite || self.is_finite()) {
-            return Err(LieError::NonFinite {
-                what: "rotation matrix",
-            });
-        }
-        let sn = s.norm();
-        if c >= 0.0 {
-            // θ ≤ π/2: |s| = sin θ is a well-conditioned measure of the axis.
-            if sn == 0.0 {
-                return Ok(s);
+        let sn2 = s.norm_squared();
+        // Every entry of R enters s or c through + or −, so a NaN or an infinity in R makes s or c
+        // non-finite. The tests below pass only for finite c ≥ +0 and finite |s|²: for c they
+        // compare bit patterns, which for non-negative doubles order like the values, while a
+        // negative c (sign bit set) and NaN compare above every finite positive pattern — one
+        // integer compare instead of `c >= 0.0 && c <= bound`.
+        let cb = c.to_bits();
+        if cb < INFINITY_BITS {
+            if sn2 <= 0.25 {
+                return Ok(s * (1.0 + trig::asin_ratio(sn2)));
             }
-            let theta = if sn <= c {
-                sn.min(1.0).asin()
-            } else {
-                c.min(1.0).acos()
-            };
-            return Ok(s * (theta / sn));
+            if sn2 <= f64::MAX {
+                let inv_sn = 1.0 / sn2.sqrt();
+                let theta = if cb <= HALF_BITS {
+                    trig::acos_half(c)
+                } else {
+                    // c > 1 only for a matrix far from SO(3) (|s| > ½ here): clamp to stay finite.
+                    2.0 * trig::asin_half(((1.0 - c.min(1.0)) * 0.5).sqrt())
+                };
+                return Ok(s * (theta * inv_sn));
+            }
         }
-        Ok(self.log_obtuse(&s, sn, c))
+        self.log_rare()
     }
     #[inline]
     fn hat(w: &Vector3<f64>) -> Matrix3<f64> {
@@ -535,9 +583,9 @@ impl LieGroup for So3 {
         mu.cross(xi)
     }
     /// `d^L exp_ω = I − ((1 − cos θ)/θ²) ω̂ + ((θ − sin θ)/θ³) ω̂²` (the right Jacobian J_r).
-    #[inline]
     ///
-    /// One `sin_cos(θ)` for both coefficients ([`rodrigues_coeffs`]), matrix entry by entry.
+    /// One `sin_cos(θ)` for both coefficients (`rodrigues_coeffs`), matrix entry by entry.
+    #[inline]
     fn dexp_left(w: &Vector3<f64>) -> Matrix3<f64> {
         let (_, b, c) = rodrigues_coeffs(w.norm_squared());
         rodrigues_matrix(w, -b, c)
@@ -611,10 +659,9 @@ impl CayleyGroup for So3 {
         }
         let den = 1.0 + self.r.trace();
         if den <= 1e-14 {
-            return Err(LieError::OutOfDomain {
-                map: "cay⁻¹",
-                reason: format!("1 + tr R = {den:.3e}: a rotation by π has no Cayley coordinates"),
-            });
+            return Err(LieError::OutOfDomain(DomainReason::CayleyRotationByPi {
+                one_plus_trace: den,
+            }));
         }
         let (s, _) = self.sin_cos_parts();
         Ok(s * (4.0 / den))
@@ -653,5 +700,56 @@ impl Action<Vector3<f64>> for So3 {
     #[inline]
     fn act(&self, p: &Vector3<f64>) -> Vector3<f64> {
         self.r * p
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fast path of `log` decides finiteness from s and c alone: every entry, set to NaN, +∞
+    /// or −∞ in turn (on a small, a medium and a large rotation, i.e. in every band), must give
+    /// `NonFinite`, never `Ok`.
+    #[test]
+    fn log_rejects_every_non_finite_entry_in_every_band() {
+        for w in [
+            Vector3::new(0.01, 0.02, -0.03),
+            Vector3::new(0.3, -0.4, 0.5),
+            Vector3::new(0.6, -0.7, 1.1),
+        ] {
+            let r = *So3::exp(&w).as_matrix();
+            for k in 0..9 {
+                for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                    let mut m = r;
+                    m[k] = bad;
+                    let res = So3::from_matrix_unchecked(&m).log();
+                    assert!(
+                        matches!(res, Err(LieError::NonFinite { .. })),
+                        "entry {k} = {bad}, ω = {w:?}: {res:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// Round-off drift can push c = (tr R − 1)/2 just above 1 near the identity, or make the
+    /// matrix slightly non-orthogonal elsewhere: the result stays finite and close to the
+    /// rotation's log.
+    #[test]
+    fn log_of_drifted_rotations_is_finite_and_close() {
+        let mut m = Matrix3::identity();
+        m[(0, 0)] += 4e-16;
+        m[(1, 1)] += 4e-16;
+        let w = So3::from_matrix_unchecked(&m).log().unwrap();
+        assert!(w.iter().all(|x| x.is_finite()) && w.norm() < 1e-15);
+        for w in [
+            Vector3::new(0.2, 0.1, 0.0),
+            Vector3::new(0.5, 0.5, 0.5),
+            Vector3::new(1.0, 0.3, 0.9),
+        ] {
+            let m = So3::exp(&w).as_matrix() * (1.0 + 1e-12);
+            let back = So3::from_matrix_unchecked(&m).log().unwrap();
+            assert!((back - w).amax() < 1e-11, "{w:?} → {back:?}");
+        }
     }
 }

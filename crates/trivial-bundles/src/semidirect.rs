@@ -11,7 +11,7 @@
 
 use crate::Pair;
 use faer::{Mat, MatRef};
-use lie_groups::{DenseMatrix, LieError, LieGroup, Operator, Vector};
+use lie_groups::{DenseMatrix, DomainReason, LieError, LieGroup, Operator, StructureCheck, Vector};
 
 /// Relative tolerance of the block-structure checks in `from_matrix`: an entry that must vanish (or
 /// equal another) may be off by `STRUCTURE_TOL · (1 + ‖M‖_max)`. Matrices built by `matrix()` meet
@@ -102,10 +102,11 @@ fn block_operator(tl: &Mat<f64>, bl: &Mat<f64>, br: &Mat<f64>) -> Mat<f64> {
     m
 }
 
-fn structure_error(map: &'static str, what: &str, error: f64, tol: f64) -> LieError {
-    LieError::OutOfDomain {
-        map,
-        reason: format!("{what} (deviation {error:.3e} > tolerance {tol:.3e})"),
+fn structure_error(check: StructureCheck, error: f64, tolerance: f64) -> LieError {
+    LieError::NotStructured {
+        check,
+        error,
+        tolerance,
     }
 }
 
@@ -198,10 +199,9 @@ impl<G: LieGroup> LieGroup for TangentBundle<G> {
         let a = self.g.log()?;
         let b = G::dexp_left_inv(&a).apply(&self.xi);
         if !b.is_finite() {
-            return Err(LieError::OutOfDomain {
-                map: "log on G ⋉ 𝔤",
-                reason: "d^L exp_a is singular at a = log g".into(),
-            });
+            return Err(LieError::OutOfDomain(
+                DomainReason::TangentBundleDexpSingular,
+            ));
         }
         Ok(Pair::new(a, b))
     }
@@ -237,7 +237,6 @@ impl<G: LieGroup> LieGroup for TangentBundle<G> {
     }
     /// Checks the block structure `[[g, u], [0, g]]`, that g is on G and that g⁻¹ u ∈ 𝔤.
     fn from_matrix(x: &Mat<f64>) -> Result<Self, LieError> {
-        const MAP: &str = "TG from_matrix";
         let m = matrix_size::<G>();
         if x.nrows() != 2 * m || x.ncols() != 2 * m {
             return Err(LieError::DimensionMismatch {
@@ -259,15 +258,18 @@ impl<G: LieGroup> LieGroup for TangentBundle<G> {
         let lower = max_abs(x.submatrix(m, 0, m, m));
         if lower > tol {
             return Err(structure_error(
-                MAP,
-                "bottom-left block is not 0",
+                StructureCheck::TangentLowerBlock,
                 lower,
                 tol,
             ));
         }
         let diag = max_abs_diff(x.submatrix(0, 0, m, m), x.submatrix(m, m, m, m));
         if diag > tol {
-            return Err(structure_error(MAP, "diagonal blocks differ", diag, tol));
+            return Err(structure_error(
+                StructureCheck::TangentDiagonalBlocks,
+                diag,
+                tol,
+            ));
         }
         let gm = group_block::<G>(x.submatrix(0, 0, m, m)).ok_or(LieError::DimensionMismatch {
             expected: m,
@@ -278,7 +280,11 @@ impl<G: LieGroup> LieGroup for TangentBundle<G> {
         let xi = vee_block::<G>(xi_hat.as_ref());
         let off = max_abs_diff(G::hat(&xi).to_mat().as_ref(), xi_hat.as_ref());
         if off > tol {
-            return Err(structure_error(MAP, "g⁻¹ u is not in 𝔤", off, tol));
+            return Err(structure_error(
+                StructureCheck::TangentNotInAlgebra,
+                off,
+                tol,
+            ));
         }
         Ok(Self::from_parts(g, xi))
     }
@@ -436,10 +442,9 @@ impl<G: LieGroup> LieGroup for CotangentBundle<G> {
         let a = self.g.log()?;
         let m = G::dexp_left_inv(&a.neg()).apply_transpose(&self.mu);
         if !m.is_finite() {
-            return Err(LieError::OutOfDomain {
-                map: "log on G ⋉ 𝔤*",
-                reason: "d^L exp_{−a} is singular at a = log g".into(),
-            });
+            return Err(LieError::OutOfDomain(
+                DomainReason::CotangentBundleDexpSingular,
+            ));
         }
         Ok(Pair::new(a, m))
     }
@@ -477,7 +482,6 @@ impl<G: LieGroup> LieGroup for CotangentBundle<G> {
     }
     /// Checks the block structure, that g is on G and that the middle block is Ad_g.
     fn from_matrix(x: &Mat<f64>) -> Result<Self, LieError> {
-        const MAP: &str = "T*G from_matrix";
         let (m, n) = (matrix_size::<G>(), G::dim());
         let size = m + n + 1;
         if x.nrows() != size || x.ncols() != size {
@@ -500,8 +504,7 @@ impl<G: LieGroup> LieGroup for CotangentBundle<G> {
         let off = max_abs(x.submatrix(0, m, m, n + 1)).max(max_abs(x.submatrix(m, 0, n + 1, m)));
         if off > tol {
             return Err(structure_error(
-                MAP,
-                "off-diagonal blocks are not 0",
+                StructureCheck::CotangentOffDiagonal,
                 off,
                 tol,
             ));
@@ -512,8 +515,7 @@ impl<G: LieGroup> LieGroup for CotangentBundle<G> {
         }
         if last > tol {
             return Err(structure_error(
-                MAP,
-                "last column is not (0, …, 0, 1)",
+                StructureCheck::CotangentLastColumn,
                 last,
                 tol,
             ));
@@ -525,7 +527,11 @@ impl<G: LieGroup> LieGroup for CotangentBundle<G> {
         let g = G::from_matrix(&gm)?;
         let ad = max_abs_diff(x.submatrix(m, m, n, n), g.adjoint().to_mat().as_ref());
         if ad > tol {
-            return Err(structure_error(MAP, "middle block is not Ad_g", ad, tol));
+            return Err(structure_error(
+                StructureCheck::CotangentAdjointBlock,
+                ad,
+                tol,
+            ));
         }
         let mu = G::Algebra::from_fn(n, |j| x[(m + n, m + j)]);
         Ok(Self::from_parts(g, mu))

@@ -8,7 +8,7 @@
 
 use crate::TangentBundle;
 use faer::Mat;
-use lie_groups::{DenseMatrix, LieError, LieGroup, Vector};
+use lie_groups::{DenseMatrix, LieError, LieGroup, StructureCheck, Vector};
 
 /// Relative tolerance for `g⁻¹ u ∈ 𝔤` in [`tr_tg`]: `‖(g⁻¹u)ˇ^ − g⁻¹u‖_max ≤ TOL · (1 + ‖u‖_max)`.
 const IN_ALGEBRA_TOL: f64 = 1e-9;
@@ -66,9 +66,10 @@ pub fn tr_tg<G: LieGroup>(v: &MatrixTangent) -> Result<TangentBundle<G>, LieErro
     let off = lie_groups::matrix::dense::max_abs_diff(G::hat(&xi).to_mat().as_ref(), x.as_ref());
     let tol = IN_ALGEBRA_TOL * (1.0 + v.u.as_ref().norm_max());
     if off > tol {
-        return Err(LieError::OutOfDomain {
-            map: "tr_TG",
-            reason: format!("g⁻¹ u is not in 𝔤 (deviation {off:.3e} > tolerance {tol:.3e})"),
+        return Err(LieError::NotStructured {
+            check: StructureCheck::TrivializationNotInAlgebra,
+            error: off,
+            tolerance: tol,
         });
     }
     Ok(TangentBundle::from_parts(g, xi))

@@ -3,7 +3,7 @@
 //! of ∫₀¹ X (I + tX)⁻¹ dt (the [m/m] Padé approximant in partial fractions), then scale back by 2ᵏ.
 
 use super::dense::{norm1, try_inverse};
-use crate::LieError;
+use crate::{DomainReason, LieError};
 use faer::{Mat, MatRef};
 
 /// Number of Gauss–Legendre nodes: for ‖X‖₁ ≤ 0.25 the quadrature error is below 1e-19.
@@ -56,18 +56,11 @@ fn sqrtm(a: MatRef<'_, f64>) -> Result<Mat<f64>, LieError> {
             return Ok(y);
         }
     }
-    Err(LieError::OutOfDomain {
-        map: "log",
-        reason: "matrix square root did not converge (eigenvalue on the negative real axis?)"
-            .into(),
-    })
+    Err(LieError::OutOfDomain(DomainReason::SqrtNoConvergence))
 }
 
 fn singular() -> LieError {
-    LieError::OutOfDomain {
-        map: "log",
-        reason: "matrix is singular or has eigenvalues on the closed negative real axis".into(),
-    }
+    LieError::OutOfDomain(DomainReason::NegativeRealEigenvalue)
 }
 
 /// The principal logarithm of a real matrix with no eigenvalue on the closed negative real axis;

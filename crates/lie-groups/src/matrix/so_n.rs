@@ -15,7 +15,7 @@
 
 use crate::matrix::dense::{expm, max_abs_diff};
 use crate::matrix::logm::logm;
-use crate::{matrix_path, Action, CayleyGroup, LieError, LieGroup};
+use crate::{matrix_path, Action, CayleyGroup, DomainReason, LieError, LieGroup};
 use core::f64::consts::PI;
 use faer::linalg::solvers::{DenseSolveCore, Solve};
 use faer::{Col, Mat, MatRef, Side};
@@ -94,11 +94,8 @@ fn skew_part(a: MatRef<'_, f64>) -> Mat<f64> {
     Mat::from_fn(n, n, |i, j| 0.5 * (a[(i, j)] - a[(j, i)]))
 }
 
-fn out_of_domain(reason: impl Into<String>) -> LieError {
-    LieError::OutOfDomain {
-        map: "log",
-        reason: reason.into(),
-    }
+fn out_of_domain(reason: DomainReason) -> LieError {
+    LieError::OutOfDomain(reason)
 }
 
 /// The principal logarithm of a rotation matrix (see [`SoN::log`]).
@@ -110,7 +107,7 @@ fn log_rotation(r: MatRef<'_, f64>) -> Result<Mat<f64>, LieError> {
     let s = Mat::from_fn(n, n, |i, j| r[(i, j)] + r[(j, i)]);
     let eig = s
         .self_adjoint_eigen(Side::Lower)
-        .map_err(|e| out_of_domain(format!("eigensolver of R + Rᵀ failed: {e:?}")))?;
+        .map_err(|_| out_of_domain(DomainReason::EigensolverNoConvergence))?;
     let v = eig.U();
     let lam = eig.S().column_vector();
     // R in the eigenbasis of R + Rᵀ: block diagonal, one block per cluster of equal cos θ.
@@ -127,11 +124,7 @@ fn log_rotation(r: MatRef<'_, f64>) -> Result<Mat<f64>, LieError> {
         let blk = b.as_ref().submatrix(start, start, d, d);
         match d {
             1 if cos_mean > 0.0 => {} // a fixed axis: log is 0 there
-            1 => {
-                return Err(out_of_domain(
-                    "a lone eigenvalue −1: det R = −1, not a rotation",
-                ))
-            }
+            1 => return Err(out_of_domain(DomainReason::LoneEigenvalueMinusOne)),
             2 => {
                 // one rotation plane: read θ off the 2×2 block by atan2 (well conditioned
                 // everywhere, including θ = π where either sign is a valid logarithm)
@@ -153,7 +146,7 @@ fn log_rotation(r: MatRef<'_, f64>) -> Result<Mat<f64>, LieError> {
                 // the deviations φₖ = θₖ − π, and log B = K − π·polar(K) (polar(K) = Σ sign(φₖ) Jₖ
                 // is the complex structure of the planes, oriented to keep θ in (−π, π]).
                 if d % 2 == 1 {
-                    return Err(out_of_domain("odd eigenspace at angle π: det R = −1"));
+                    return Err(out_of_domain(DomainReason::OddEigenspaceAtPi));
                 }
                 let neg = Mat::from_fn(d, d, |i, j| -blk[(i, j)]);
                 let k = skew_part(logm(neg.as_ref())?.as_ref());
@@ -172,14 +165,11 @@ fn log_rotation(r: MatRef<'_, f64>) -> Result<Mat<f64>, LieError> {
                 } else {
                     let svd = k
                         .svd()
-                        .map_err(|e| out_of_domain(format!("SVD failed: {e:?}")))?;
+                        .map_err(|_| out_of_domain(DomainReason::LogSvdNoConvergence))?;
                     let sv = svd.S().column_vector();
                     let smin = (0..d).map(|i| sv[i]).fold(f64::INFINITY, f64::min);
                     if smin < 1e-8 * kmax {
-                        return Err(out_of_domain(
-                            "several rotation planes at angle π mixed with planes near π: \
-                             the logarithm is ill-conditioned",
-                        ));
+                        return Err(out_of_domain(DomainReason::IllConditionedAtPi));
                     }
                     skew_part((svd.U() * svd.V().transpose()).as_ref())
                 };
@@ -237,10 +227,9 @@ impl<const N: usize> SoN<N> {
     /// a wrong shape, non-finite entries, or an SVD that does not converge.
     pub fn project(m: &Mat<f64>) -> Result<Self, LieError> {
         check_shape::<N>(m)?;
-        let svd = m.svd().map_err(|e| LieError::OutOfDomain {
-            map: "project",
-            reason: format!("SVD failed: {e:?}"),
-        })?;
+        let svd = m
+            .svd()
+            .map_err(|_| LieError::OutOfDomain(DomainReason::ProjectSvdNoConvergence))?;
         let (u, v) = (svd.U(), svd.V());
         let det = (u * v.transpose()).determinant();
         let mut u = u.to_owned();
