@@ -407,10 +407,22 @@ impl LieGroup for So3 {
     /// leaves an error of O(E²), so drift never accumulates (two 3×3 products).
     #[inline]
     fn normalize(&self) -> Self {
-        let rtr = self.r.tr_mul(&self.r);
-        Self {
-            r: self.r * (Matrix3::identity() * 1.5 - rtr * 0.5),
-        }
+        // RᵀR is symmetric: its six distinct entries are the column dot products.
+        let c = |j: usize| self.r.column(j).into_owned();
+        let (c0, c1, c2) = (c(0), c(1), c(2));
+        let (d01, d02, d12) = (-0.5 * c0.dot(&c1), -0.5 * c0.dot(&c2), -0.5 * c1.dot(&c2));
+        let corr = Matrix3::new(
+            1.5 - 0.5 * c0.norm_squared(),
+            d01,
+            d02,
+            d01,
+            1.5 - 0.5 * c1.norm_squared(),
+            d12,
+            d02,
+            d12,
+            1.5 - 0.5 * c2.norm_squared(),
+        );
+        Self { r: self.r * corr }
     }
     type Algebra = Vector3<f64>;
     type Operator = Matrix3<f64>;
