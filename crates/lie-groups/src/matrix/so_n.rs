@@ -418,6 +418,16 @@ impl<const N: usize> CayleyGroup for SoN<N> {
         let h = p.partial_piv_lu().inverse();
         so_compound(h.as_ref())
     }
+    /// `d^{L*}cay_ξ μ = (hᵀ μ̂ h)ˇ`, h = (I + ξ̂/2)⁻¹: the transpose of [`CayleyGroup::dcay_left`]
+    /// under the coordinate pairing (for skew M, `⟨μ̂, M⟩_F = 2 μ·M̌`, so
+    /// `μ·(h η̂ hᵀ)ˇ = ½⟨hᵀ μ̂ h, η̂⟩_F = (hᵀ μ̂ h)ˇ·η`). O(n³), where forming the dim 𝔤 × dim 𝔤
+    /// operator costs O(n⁴) memory and its transpose-apply O(n⁴) time.
+    fn dcay_left_dual_apply(xi: &Col<f64>, mu: &Col<f64>) -> Col<f64> {
+        let h = Self::cayley_factor(xi).partial_piv_lu().inverse();
+        let m = so_hat(N, mu);
+        let mh = &m * &h;
+        so_vee((h.transpose() * &mh).as_ref())
+    }
     /// `(d^L cay_ξ)⁻¹ (η) = (η̂ + [ξ̂, η̂]/2 − ξ̂ η̂ ξ̂/4)ˇ = ((I + ξ̂/2) η̂ (I − ξ̂/2))ˇ`: the second
     /// compound of `I + ξ̂/2`.
     fn dcay_left_inv(xi: &Col<f64>) -> Mat<f64> {
