@@ -149,7 +149,11 @@ fn so_n_case<const N: usize>(group: &mut BenchmarkGroup<'_, WallTime>, newton: b
             let lp =
                 LiePoisson::<SoN<N>, Cayley, _>::new(body.clone(), theta, mu0.clone(), g0.clone())
                     .unwrap();
-            bench_step(group, &format!("lp/cayley/{theta}+g/simplified-newton/n={N}"), lp);
+            bench_step(
+                group,
+                &format!("lp/cayley/{theta}+g/simplified-newton/n={N}"),
+                lp,
+            );
         }
         let lp = LiePoisson::<SoN<N>, Cayley, _>::new(body.clone(), theta, mu0.clone(), g0.clone())
             .unwrap()
