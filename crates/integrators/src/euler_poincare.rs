@@ -166,7 +166,10 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S>
             (self.xi.clone(), 0)
         } else {
             let evaluate = |xi: &G::Algebra| Ok((self.residual(a, xi), ()));
-            let solution = solve::<G, ()>(&self.config, h, self.xi.clone(), evaluate, |xi, _| {
+            // Predictor ξ⁰ = ξ_k + θh f(g_k, ξ_k): r(ξ) = ξ − ξ_k − θh f + O(h²) at ξ = ξ_k + O(h),
+            // so ξ⁰ is within O(h²) of the solution (ξ_k alone is O(h)).
+            let guess = self.xi.axpy(a, &self.field(self.g.as_ref(), &self.xi));
+            let solution = solve::<G, ()>(&self.config, h, guess, evaluate, |xi, _| {
                 self.jacobian(a, xi)
             })?;
             (solution.xi, solution.iterations)
