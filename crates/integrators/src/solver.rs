@@ -30,7 +30,8 @@
 //! error left after the update Δξ_k is estimated by `ρ/(1−ρ) ‖Δξ_k‖` (Hairer & Wanner, *Solving
 //! ODEs II*, §IV.8), which saves the last, confirming iteration of a plain `‖Δξ_k‖ ≤ tolerance`
 //! test; at the first iteration, or when the updates no longer contract (round-off level), the
-//! estimate is ‖Δξ_k‖ itself.
+//! estimate is ‖Δξ_k‖ itself. It also stops when an update no longer changes ξ in floating point:
+//! every further iteration would repeat it.
 
 use crate::IntegratorError;
 use lie_groups::{LieGroup, Operator, Vector};
@@ -62,7 +63,9 @@ pub struct SolverConfig {
     /// Relative tolerance on the error of ξ, estimated from the updates (see the module page):
     /// stop when `ρ/(1−ρ) ‖Δξ‖_max ≤ tolerance · ‖ξ‖_max`.
     /// The default 1e-14 is ~50 ulps: the residual itself is evaluated with a relative round-off
-    /// of a few ulps, so tighter values may never be met.
+    /// of a few ulps. Tighter values are met when the iteration reaches a floating-point fixed
+    /// point (the update no longer changes ξ); otherwise round-off noise in the updates may keep
+    /// them from being met ([`IntegratorError::NoConvergence`]).
     pub tolerance: f64,
     /// Maximum number of iterations before [`IntegratorError::NoConvergence`].
     pub max_iterations: usize,
@@ -126,7 +129,8 @@ pub struct Solution<A, E> {
 /// `ρ = ‖Δξ_k‖/‖Δξ_{k−1}‖ < 1`, the error left after the update Δξ_k is at most about
 /// `ρ/(1−ρ) ‖Δξ_k‖`; the iteration stops when that estimate (or ‖Δξ_k‖ itself at the first
 /// iteration, or when the updates stop contracting at round-off level) is within
-/// `tolerance · ‖ξ‖_max`, or when Δξ = 0.
+/// `tolerance · ‖ξ‖_max`, or when the update no longer changes ξ in floating point (Δξ = 0 or
+/// below half an ulp of ξ), where further iterations would repeat the last one.
 pub fn solve<G: LieGroup, E>(
     config: &SolverConfig,
     step: f64,
@@ -198,7 +202,9 @@ pub fn solve<G: LieGroup, E>(
         } else {
             dn
         };
-        if dn == 0.0 || error_estimate <= config.tolerance * xi.norm_max() {
+        // `unchanged`: ξ is a fixed point of the iteration in floating point, so every further
+        // iteration would repeat this one.
+        if unchanged || error_estimate <= config.tolerance * xi.norm_max() {
             return Ok(Solution {
                 xi,
                 iterations: it,
@@ -267,5 +273,63 @@ fn check_tau_round_trip<G: LieGroup, T: lie_groups::Tau<G>>(
                 T::NAME
             ),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use lie_groups::So3;
+    use nalgebra::{Matrix3, Vector3};
+
+    /// An update below half an ulp of ξ leaves ξ bitwise unchanged: the iteration has reached a
+    /// floating-point fixed point and stops (returning that evaluation), even when the tolerance
+    /// asks for more than round-off allows; it used to run into the iteration limit.
+    #[test]
+    fn an_update_that_no_longer_changes_xi_ends_the_iteration() {
+        let config = SolverConfig {
+            kind: SolverKind::FixedPoint,
+            tolerance: 1e-40,
+            ..SolverConfig::default()
+        };
+        let xi0 = Vector3::new(1.0, 1.0, 1.0);
+        let evaluate = |xi: &Vector3<f64>| Ok((Vector3::new(1e-30, 0.0, 0.0), *xi));
+        let solution =
+            solve::<So3, Vector3<f64>>(&config, 0.1, xi0, evaluate, |_, _| Matrix3::identity())
+                .unwrap();
+        assert_eq!(solution.xi, xi0);
+        assert_eq!(solution.iterations, 1);
+        assert_eq!(solution.evaluation, Some(xi0));
+    }
+
+    /// The error estimate ρ/(1−ρ)‖Δξ‖ bounds what a slowly contracting iteration leaves: for
+    /// r(ξ) = (ξ − ξ*)/10 the fixed point contracts by ρ = 0.9, so after an update Δξ the error is
+    /// 9‖Δξ‖. The result is within the tolerance of ξ*; a plain ‖Δξ‖ ≤ tolerance test would stop
+    /// with 9× the tolerance.
+    #[test]
+    fn the_error_estimate_keeps_a_slow_iteration_within_the_tolerance() {
+        let tolerance = 1e-8;
+        let config = SolverConfig {
+            kind: SolverKind::FixedPoint,
+            tolerance,
+            max_iterations: 1000,
+            ..SolverConfig::default()
+        };
+        let target = Vector3::new(1.0, -2.0, 0.5);
+        let evaluate = |xi: &Vector3<f64>| Ok(((xi - target) * 0.1, ()));
+        let solution = solve::<So3, ()>(&config, 0.1, Vector3::zeros(), evaluate, |_, _| {
+            Matrix3::identity()
+        })
+        .unwrap();
+        let error = (solution.xi - target).amax();
+        assert!(
+            error <= tolerance * solution.xi.amax(),
+            "error {error:e} after {} iterations",
+            solution.iterations
+        );
+        assert!(
+            error > 0.5 * tolerance * solution.xi.amax(),
+            "stopped later than needed"
+        );
     }
 }
