@@ -6,38 +6,12 @@
 use integrators::baselines::{QuaternionRk4, Rkmk4};
 use integrators::systems::{HeavyTop, PlanarBody, RigidBody, RigidBodySe3};
 use integrators::{EulerPoincare, Integrator, LiePoisson, SolverConfig, SolverKind, System};
+use lie_groups::testing::{allocations, CountingAllocator};
 use lie_groups::{Cayley, CayleyGroup, ExpMap, LieGroup, Se2, Se3, So2, So3, Tau};
 use nalgebra::{Matrix3, Vector2, Vector3, Vector6};
-use std::alloc::{GlobalAlloc, Layout, System as SystemAllocator};
-use std::cell::Cell;
-
-struct Counting;
-
-thread_local! {
-    /// Allocations made by this thread (the harness's own threads allocate concurrently and must
-    /// not be charged to the code under test). `const` initialisation: reading it never allocates.
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
-        unsafe { SystemAllocator.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { SystemAllocator.dealloc(ptr, layout) }
-    }
-}
 
 #[global_allocator]
-static GLOBAL: Counting = Counting;
-
-/// Allocations made by `f` on the calling thread.
-fn allocations(f: impl FnOnce()) -> usize {
-    let before = ALLOCATIONS.with(Cell::get);
-    f();
-    ALLOCATIONS.with(Cell::get) - before
-}
+static GLOBAL: CountingAllocator = CountingAllocator;
 
 /// One step, then 100 counted steps of size h.
 fn assert_steps_allocate_nothing<I: Integrator>(mut integ: I, h: f64) {

@@ -17,6 +17,9 @@ use crate::matrix::dense::max_abs_diff;
 use crate::{matrix_path, CayleyGroup, DenseMatrix, LieGroup, Operator, Tau, Vector};
 use faer::{Mat, MatRef};
 pub use proptest;
+
+mod allocations;
+pub use allocations::{allocations, CountingAllocator};
 use proptest::prelude::*;
 
 /// A proptest strategy for algebra elements with components uniform in [−scale, scale].

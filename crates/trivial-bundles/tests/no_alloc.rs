@@ -1,41 +1,13 @@
 //! compose, inverse, Ad and Ad* of the bundles allocate nothing when the base group is fixed-size
 //! (SO(3), SE(3)), including the nested TTG, TT*G, T*TG, T*T*G: counted by a global allocator.
 
+use lie_groups::testing::{allocations, CountingAllocator};
 use lie_groups::{LieGroup, Se3, So3};
 use nalgebra::{Vector3, Vector6};
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 use trivial_bundles::prelude::*;
 
-struct Counting;
-
-thread_local! {
-    /// Allocations made by this thread. Counted per thread: the test harness's own threads
-    /// allocate concurrently (seen in CI under load as spurious counts), and must not be charged
-    /// to the code under test. `const` initialisation: reading it never allocates.
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        // `try_with`: the thread-local may already be gone while a thread shuts down.
-        let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
 #[global_allocator]
-static GLOBAL: Counting = Counting;
-
-/// Allocations made by `f` on the calling thread.
-fn allocations(f: impl FnOnce()) -> usize {
-    let before = ALLOCATIONS.with(Cell::get);
-    f();
-    ALLOCATIONS.with(Cell::get) - before
-}
+static GLOBAL: CountingAllocator = CountingAllocator;
 
 fn assert_hot_paths_allocate_nothing<B: LieGroup>(x: &B, y: &B, v: &B::Algebra) {
     let n = allocations(|| {
