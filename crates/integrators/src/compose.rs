@@ -502,6 +502,15 @@ impl<I: StateSnapshot> Integrator for Composition<I> {
     fn casimir(&self) -> Option<f64> {
         self.inner.casimir()
     }
+    /// The scheme's order (the base is symmetric of order 2, by [`Composition::new`]), symmetric,
+    /// and whatever the base keeps: every flag of [`crate::MethodInfo`] is closed under composition.
+    fn info(&self) -> crate::MethodInfo {
+        crate::MethodInfo {
+            order: self.scheme.order(),
+            symmetric: true,
+            ..self.inner.info()
+        }
+    }
     fn method_name(&self) -> String {
         format!(
             "composition({}, {} stages)∘{}",

@@ -230,4 +230,20 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S>
     fn method_name(&self) -> String {
         format!("euler-poincare(tau={}, theta={})", T::NAME, self.theta)
     }
+    /// Order 2 for θ = ½, order 1 otherwise (`tests/order.rs`); θ = 0 is explicit. A variational
+    /// integrator: symplectic in (g, ξ) through the discrete Legendre map, but μ = ∂l/∂ξ leaves its
+    /// coadjoint orbit (Casimirs are not kept).
+    fn info(&self) -> crate::MethodInfo {
+        let symmetric = self.theta == 0.5;
+        crate::MethodInfo {
+            order: if symmetric { 2 } else { 1 },
+            symmetric,
+            explicit: self.theta == 0.0,
+            poisson: false,
+            casimirs: false,
+            momentum_map: false,
+            energy: false,
+            on_group: true,
+        }
+    }
 }

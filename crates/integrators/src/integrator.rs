@@ -4,6 +4,66 @@
 use crate::IntegratorError;
 use lie_groups::LieGroup;
 
+/// What a method is and what it keeps, so that tools (`lie-sim trade`, `choose`, the docs) read it
+/// from the method instead of repeating it.
+///
+/// Each flag is a property of the method *as configured* (θ, the system's potential, the
+/// composition scheme): LP θ = 0 is order 2 on a free body and order 1 with a potential, and says so.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MethodInfo {
+    /// The classical order p of the global error O(hᵖ) on smooth problems (the effective order
+    /// for processed methods, the exact flow's being [`MethodInfo::EXACT`]).
+    pub order: u32,
+    /// Symmetric (time-reversible): Φ_{−h} = Φ_h⁻¹.
+    pub symmetric: bool,
+    /// Explicit: no equation is solved in a step.
+    pub explicit: bool,
+    /// A Poisson (symplectic) map of T*G, restricted to each coadjoint orbit.
+    pub poisson: bool,
+    /// Casimirs of the Lie–Poisson bracket conserved to round-off (μ stays on its coadjoint orbit).
+    pub casimirs: bool,
+    /// The spatial momentum map `Ad*_{g⁻¹} μ` conserved to round-off when the system is
+    /// invariant (no potential).
+    pub momentum_map: bool,
+    /// The energy conserved to round-off (not merely bounded).
+    pub energy: bool,
+    /// g stays on G to round-off.
+    pub on_group: bool,
+}
+
+impl MethodInfo {
+    /// The order reported by an exact flow (no truncation error at all).
+    pub const EXACT: u32 = u32::MAX;
+
+    /// A general explicit method of order p that keeps nothing but g on G.
+    pub const fn plain(order: u32) -> Self {
+        Self {
+            order,
+            symmetric: false,
+            explicit: true,
+            poisson: false,
+            casimirs: false,
+            momentum_map: false,
+            energy: false,
+            on_group: true,
+        }
+    }
+
+    /// The names of the kept structures, e.g. `["poisson", "casimirs", "momentum-map"]`.
+    pub fn preserved(&self) -> Vec<&'static str> {
+        [
+            (self.poisson, "poisson"),
+            (self.casimirs, "casimirs"),
+            (self.momentum_map, "momentum-map"),
+            (self.energy, "energy"),
+            (self.on_group, "on-group"),
+        ]
+        .into_iter()
+        .filter_map(|(keep, name)| keep.then_some(name))
+        .collect()
+    }
+}
+
 /// A one-step method advancing the state (t, μ, optional g) of a mechanical system on G.
 ///
 /// `step(h)` either advances the state by h or returns an error and leaves it exactly as it was.
@@ -28,6 +88,8 @@ pub trait Integrator {
     fn casimir(&self) -> Option<f64>;
     /// A short description of the method, e.g. `"lie-poisson(tau=cayley, theta=0.5)"`.
     fn method_name(&self) -> String;
+    /// What the method is (order, symmetric, explicit) and what it keeps.
+    fn info(&self) -> MethodInfo;
 }
 
 /// Takes `steps` steps of size h, calling `observe` after each one; stops at the first error.

@@ -65,7 +65,7 @@ pub use compose::{Composition, CompositionScheme, StateSnapshot, SymmetricMethod
 pub use error::IntegratorError;
 pub use euler_arnold::{EulerArnold, EulerArnoldEulerPoincare, EulerArnoldLiePoisson};
 pub use euler_poincare::EulerPoincare;
-pub use integrator::{integrate, Integrator};
+pub use integrator::{integrate, Integrator, MethodInfo};
 pub use lie_poisson::LiePoisson;
 pub use solver::{SolverConfig, SolverKind};
 pub use system::System;

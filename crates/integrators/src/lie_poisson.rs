@@ -362,6 +362,27 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
     fn method_name(&self) -> String {
         format!("lie-poisson(tau={}, theta={})", T::NAME, self.theta)
     }
+    /// Order 2 for θ = ½, and for every θ without a potential (θ = 0 and θ = 1 then coincide);
+    /// order 1 for θ ≠ ½ with a potential (`tests/order.rs`, `tests/potential.rs`). Implicit, a
+    /// Poisson map keeping μ on its coadjoint orbit and, for an invariant system, the spatial
+    /// momentum map `Ad*_{g⁻¹} μ` (g_{k+1} = g_k τ(θξ) τ((1−θ)ξ) and μ_{k+1} the matching Ad*).
+    fn info(&self) -> crate::MethodInfo {
+        let symmetric = self.theta == 0.5;
+        crate::MethodInfo {
+            order: if symmetric || !self.system.has_potential() {
+                2
+            } else {
+                1
+            },
+            symmetric,
+            explicit: false,
+            poisson: true,
+            casimirs: !self.system.has_potential(),
+            momentum_map: true,
+            energy: false,
+            on_group: true,
+        }
+    }
 }
 
 #[cfg(test)]

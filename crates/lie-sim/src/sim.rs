@@ -275,6 +275,9 @@ impl<G: LieGroup> Integrator for Boxed<G> {
     fn method_name(&self) -> String {
         self.0.method_name()
     }
+    fn info(&self) -> integrators::MethodInfo {
+        self.0.info()
+    }
 }
 
 /// `inner`, or `inner` composed with `scheme` (which refuses a base that is not symmetric).

@@ -175,4 +175,9 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
     fn method_name(&self) -> String {
         "rk4(quaternion)".into()
     }
+    /// Classical RK4: order 4, explicit; q is renormalised every step, so R stays on SO(3), and
+    /// nothing else is kept.
+    fn info(&self) -> crate::MethodInfo {
+        crate::MethodInfo::plain(4)
+    }
 }

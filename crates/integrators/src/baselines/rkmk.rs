@@ -179,4 +179,8 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
     fn method_name(&self) -> String {
         "rkmk4(exp)".into()
     }
+    /// RKMK4: order 4, explicit; g_{k+1} = g_k exp(Θ) stays on G, and nothing else is kept.
+    fn info(&self) -> crate::MethodInfo {
+        crate::MethodInfo::plain(4)
+    }
 }
