@@ -10,6 +10,8 @@
 //!   conserved to round-off.
 //! - [`EulerPoincare`]: the tangent lift, eq. (18), state (g, ξ).
 //! - [`EulerArnold`]: the quadratic-Lagrangian system l(ξ) = ½⟨𝕀ξ, ξ⟩ both integrate.
+//! - [`splitting`]: explicit Poisson splittings into pieces with exact flows (Strang, with
+//!   [`Composition`] to order 10; exact kinetic flow + kicks with Blanes–Moan coefficients).
 //!
 //! A system is anything implementing [`System`] (reduced Hamiltonian h(μ), its derivatives, the
 //! Legendre map, an optional potential V(g) and Casimir); [`systems`] holds concrete ones. Every
@@ -57,6 +59,7 @@ pub mod euler_poincare;
 mod integrator;
 pub mod lie_poisson;
 pub mod solver;
+pub mod splitting;
 mod system;
 pub mod systems;
 

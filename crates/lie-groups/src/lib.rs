@@ -61,4 +61,5 @@ pub use se3::Se3;
 pub use so2::So2;
 pub use so3::So3;
 pub use tau::{Cayley, CayleyGroup, ExpMap, Tau};
+pub use trig::sin_cos;
 pub use vector::Vector;

@@ -131,6 +131,18 @@ pub(crate) fn sin_cos_quadrant(x: f64) -> (f64, f64) {
     }
 }
 
+/// `(sin x, cos x)` for any x, each within 1 ulp: the fdlibm kernels without a libm call for
+/// |x| ≤ π/2 (the common case of a rotation by one step's angle), libm's `sin_cos` beyond.
+#[inline(always)]
+pub fn sin_cos(x: f64) -> (f64, f64) {
+    if x >= 0.0 {
+        sin_cos_quadrant(x)
+    } else {
+        let (s, c) = sin_cos_quadrant(-x);
+        (-s, c)
+    }
+}
+
 #[cold]
 #[inline(never)]
 fn sin_cos_libm(x: f64) -> (f64, f64) {
@@ -144,6 +156,31 @@ mod tests {
     /// Distance in units in the last place between two finite doubles of the same sign.
     fn ulps(a: f64, b: f64) -> u64 {
         (a.to_bits() as i64 - b.to_bits() as i64).unsigned_abs()
+    }
+
+    /// The public `sin_cos`: odd and even symmetry on negative angles, libm beyond π/2, NaN kept.
+    #[test]
+    fn sin_cos_matches_libm_on_every_sign_and_range() {
+        for x in [
+            -1e-300,
+            -0.3,
+            -1.2,
+            -1.5707963267948966,
+            0.7,
+            2.0,
+            -3.0,
+            1e6,
+            -1e6,
+        ] {
+            let (s, c) = sin_cos(x);
+            let (s0, c0) = x.sin_cos();
+            assert!(
+                (s - s0).abs() <= 2.0 * f64::EPSILON * s0.abs()
+                    && (c - c0).abs() <= 2.0 * f64::EPSILON,
+                "{x}: ({s}, {c}) against ({s0}, {c0})"
+            );
+        }
+        assert!(sin_cos(f64::NAN).0.is_nan() && sin_cos(f64::INFINITY).1.is_nan());
     }
 
     #[test]

@@ -36,6 +36,7 @@
 //! [`System::casimir`] returns `None`: with the potential, |Π|² is no longer conserved, and the
 //! conserved quantities above depend on R ([`HeavyTop::vertical_angular_momentum`]).
 
+use crate::splitting::SplitSystem;
 use crate::{IntegratorError, System};
 use lie_groups::So3;
 use nalgebra::{Matrix3, Vector3};
@@ -184,5 +185,21 @@ impl System<So3> for HeavyTop {
     /// `T*_e L_R dV = m g χ × Γ` (derivation on the module page).
     fn potential_differential(&self, g: &So3) -> Vector3<f64> {
         self.mgchi.cross(&Self::vertical_in_body(g))
+    }
+}
+
+/// The kinetic pieces of the body's splitting ([`RigidBody`]'s principal-axis rotations); the
+/// gravity potential is the kick.
+impl SplitSystem<So3> for HeavyTop {
+    fn pieces(&self) -> usize {
+        3
+    }
+    #[inline]
+    fn piece_velocity(&self, i: usize, mu: &Vector3<f64>) -> Vector3<f64> {
+        self.body.piece_velocity(i, mu)
+    }
+    #[inline]
+    fn piece_flow(&self, i: usize, t: f64, mu: &mut Vector3<f64>, g: Option<&mut So3>) {
+        self.body.piece_flow(i, t, mu, g)
     }
 }

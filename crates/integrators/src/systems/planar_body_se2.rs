@@ -30,6 +30,7 @@
 //! [`super::heavy_top`]); with k = 0 the spatial linear momentum obeys `R P(t) = R₀P₀ + m γ t`,
 //! which the Lie–Poisson integrators reproduce exactly (the spatial force `m γ` is constant).
 
+use crate::splitting::SplitSystem;
 use crate::{IntegratorError, System};
 use lie_groups::{LieGroup, Se2};
 use nalgebra::{Matrix3, Vector2, Vector3};
@@ -168,5 +169,20 @@ impl System<Se2> for PlanarBody {
         let s = self.spring_body(g);
         let lin = s * self.stiffness - g.rotation().inverse().rotate(&self.gravity) * self.mass;
         Vector3::new(self.stiffness * cross2(&self.attachment, &s), lin.x, lin.y)
+    }
+}
+
+/// Two pieces: the rotation `ξ₁ = (L/J, 0, 0)` (it turns P, never L) and the translation
+/// `ξ₂ = (0, P/m)` (it changes L by the moment of P, never P); the potential is the kick.
+impl SplitSystem<Se2> for PlanarBody {
+    fn pieces(&self) -> usize {
+        2
+    }
+    fn piece_velocity(&self, i: usize, mu: &Vector3<f64>) -> Vector3<f64> {
+        if i == 0 {
+            Vector3::new(mu.x / self.inertia, 0.0, 0.0)
+        } else {
+            Vector3::new(0.0, mu.y / self.mass, mu.z / self.mass)
+        }
     }
 }

@@ -42,6 +42,7 @@
 //! rotational part of `Ad*_{ḡ⁻¹} F(ḡ)` vanishes by the invariance), the Lie–Poisson integrators
 //! conserve L to round-off for every θ and τ.
 
+use crate::splitting::SplitSystem;
 use crate::{IntegratorError, System};
 use lie_groups::Se3;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
@@ -196,5 +197,22 @@ impl System<Se3> for RigidBodySe3 {
         let b = g.rotation().as_matrix().tr_mul(g.translation());
         let grad = self.gradient_body(&b);
         join(&grad.cross(&b), &grad)
+    }
+}
+
+/// Four pieces: the rotations about the principal axes, `ξᵢ = ((aᵢ·Π/Iᵢ) aᵢ, 0)` (the rotation
+/// fixes aᵢ·Π), and the translation `ξ₄ = (0, P/m)` (it changes Π by a moment of P, never P);
+/// the potential (gravity gradient) is the kick. Flows by the generic exp / Ad* form.
+impl SplitSystem<Se3> for RigidBodySe3 {
+    fn pieces(&self) -> usize {
+        4
+    }
+    fn piece_velocity(&self, i: usize, mu: &Vector6<f64>) -> Vector6<f64> {
+        let (pi, p) = split(mu);
+        if i < 3 {
+            join(&self.body.piece_velocity(i, &pi), &Vector3::zeros())
+        } else {
+            join(&Vector3::zeros(), &(p / self.mass))
+        }
     }
 }

@@ -1,0 +1,431 @@
+//! The explicit splittings (`integrators::splitting`): the coefficient tables' orders, the pieces
+//! of every system, fitted orders against independent references, invariants over long runs,
+//! reversibility, fast spins, and bad input.
+
+mod common;
+
+use common::*;
+use integrators::splitting::{
+    AxisymmetricFlow, KineticKick, SplitSystem, Splitting, SplittingScheme,
+};
+use integrators::systems::{HeavyTop, PlanarBody, RigidBody, RigidBodySe3};
+use integrators::{
+    Composition, CompositionScheme, Integrator, IntegratorError, QuaternionRk4, StateSnapshot,
+};
+use lie_groups::{LieGroup, Se2, Se3, So3, Vector};
+use nalgebra::{Matrix3, Matrix4, Vector3, Vector6};
+
+/// ‖Ψ_h − e^{h(A+B)}‖ for the scheme's product of matrix exponentials.
+fn local_error(scheme: &SplittingScheme, a: &Matrix4<f64>, b: &Matrix4<f64>, h: f64) -> f64 {
+    let mut psi = Matrix4::identity();
+    for (i, &ai) in scheme.a().iter().enumerate() {
+        psi = (a * (ai * h)).exp() * psi;
+        if let Some(&bi) = scheme.b().get(i) {
+            psi = (b * (bi * h)).exp() * psi;
+        }
+    }
+    (psi - (a + b).scale(h).exp()).amax()
+}
+
+/// Every table: Σa = Σb = 1, palindromic, and the local error of e^{h(A+B)} for random
+/// non-commuting 4×4 matrices falls as h^{p+1} (fitted within 0.2).
+/// A wrong digit in the fifth place already drops the order (checked by editing a coefficient).
+#[test]
+fn splitting_schemes_have_their_order_on_non_commuting_matrices() {
+    let a = Matrix4::from_fn(|i, j| ((3 * i + 7 * j) % 5) as f64 * 0.15 - 0.25);
+    let b = Matrix4::from_fn(|i, j| ((5 * i + 2 * j) % 7) as f64 * 0.1 - 0.3);
+    assert!((a * b - b * a).amax() > 0.02);
+    for scheme in SplittingScheme::builtin() {
+        let (sa, sb): (f64, f64) = (scheme.a().iter().sum(), scheme.b().iter().sum());
+        assert!(
+            (sa - 1.0).abs() < 1e-15 && (sb - 1.0).abs() < 1e-15,
+            "{}",
+            scheme.name()
+        );
+        assert!(
+            scheme.a().iter().eq(scheme.a().iter().rev()),
+            "{}",
+            scheme.name()
+        );
+        assert!(
+            scheme.b().iter().eq(scheme.b().iter().rev()),
+            "{}",
+            scheme.name()
+        );
+        // Steps in each scheme's asymptotic range, above the round-off floor of its error.
+        let hs: &[f64] = match scheme.order() {
+            2 => &[0.05, 0.035, 0.025, 0.0175, 0.0125],
+            4 => &[0.1, 0.07, 0.05, 0.035, 0.025],
+            _ => &[0.4, 0.28, 0.2, 0.14],
+        };
+        let errs: Vec<f64> = hs
+            .iter()
+            .map(|&h| local_error(&scheme, &a, &b, h))
+            .collect();
+        let p = fitted_order(hs, &errs);
+        println!("{}: local order {p:.2}, errors {errs:?}", scheme.name());
+        let want = f64::from(scheme.order() + 1);
+        assert!((p - want).abs() < 0.2, "{}: local order {p}", scheme.name());
+    }
+}
+
+/// Σᵢ ξᵢ(μ) = ∂h/∂μ(μ) for every system that declares a splitting, and ξᵢ is constant along its
+/// own flow.
+#[test]
+fn pieces_sum_to_the_velocity_and_are_constant_along_their_flows() {
+    fn check<G: LieGroup, S: SplitSystem<G>>(s: &S, mu: G::Algebra, g: G, name: &str) {
+        let mut sum = G::Algebra::zeros(G::dim());
+        for i in 0..s.pieces() {
+            let xi = s.piece_velocity(i, &mu);
+            sum = sum.add(&xi);
+            let (mut m, mut gg) = (mu.clone(), g.clone());
+            s.piece_flow(i, 0.7, &mut m, Some(&mut gg));
+            let after = s.piece_velocity(i, &m);
+            assert!(
+                after.sub(&xi).norm() < 1e-14,
+                "{name}: piece {i} velocity moves"
+            );
+            // The flow solves μ̇ = ad*_ξ μ: compare with a central difference at t = 0.
+            let d = 1e-6;
+            let (mut mp, mut mm) = (mu.clone(), mu.clone());
+            s.piece_flow(i, d, &mut mp, None);
+            s.piece_flow(i, -d, &mut mm, None);
+            let rate = mp.sub(&mm).scale(0.5 / d);
+            let want = G::ad_dual_apply(&xi, &mu);
+            assert!(
+                rate.sub(&want).norm() < 1e-8,
+                "{name}: piece {i} is not μ̇ = ad*_ξ μ"
+            );
+        }
+        assert!(
+            sum.sub(&s.velocity(&mu)).norm() < 1e-14,
+            "{name}: Σξᵢ ≠ ∂h/∂μ"
+        );
+    }
+    let g3 = So3::exp(&Vector3::new(0.3, -0.2, 0.9));
+    let pi = Vector3::new(0.4, -1.1, 0.7);
+    check(
+        &RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+        pi,
+        g3,
+        "free body",
+    );
+    let full = Matrix3::new(2.0, 0.1, 0.3, 0.1, 3.0, -0.2, 0.3, -0.2, 4.0);
+    check(&RigidBody::new(full).unwrap(), pi, g3, "full tensor");
+    let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 9.81, Vector3::new(0.0, 0.1, 0.5)).unwrap();
+    check(&top, pi, g3, "heavy top");
+    let sat = RigidBodySe3::satellite(
+        2.0,
+        Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+        1.0,
+    )
+    .unwrap();
+    let g6 = Se3::exp(&Vector6::new(0.2, 0.1, -0.3, 3.0, 0.5, -0.2));
+    check(
+        &sat,
+        Vector6::new(0.3, -0.4, 0.5, 0.1, 0.9, -0.2),
+        g6,
+        "SE(3) satellite",
+    );
+    let planar = PlanarBody::free(2.0, 0.5).unwrap();
+    check(
+        &planar,
+        Vector3::new(0.7, 0.2, -0.4),
+        Se2::exp(&Vector3::new(0.3, 1.0, 2.0)),
+        "SE(2)",
+    );
+}
+
+fn error_vs(
+    reference: &(Matrix3<f64>, Vector3<f64>),
+    got: &(Matrix3<f64>, Vector3<f64>),
+    scale: f64,
+) -> f64 {
+    (got.0 - reference.0)
+        .amax()
+        .max((got.1 - reference.1).amax() / scale)
+}
+
+/// Fitted order of `make()` integrated to t with each n of `steps`, against `reference`.
+fn order_of<I: Integrator<Group = So3>>(
+    make: impl Fn() -> I,
+    t: f64,
+    steps: &[usize],
+    reference: &(Matrix3<f64>, Vector3<f64>),
+    scale: f64,
+) -> (f64, f64) {
+    let mut hs = vec![];
+    let mut errs = vec![];
+    for &n in steps {
+        let got = run(make(), t / n as f64, n).unwrap();
+        hs.push(t / n as f64);
+        errs.push(error_vs(reference, &got, scale));
+    }
+    (fitted_order(&hs, &errs), *errs.last().unwrap())
+}
+
+/// Strang is order 2 and its compositions 4 and 6 on an asymmetric free body with a full inertia
+/// tensor (against RK4 at h = 1e-4) and on an axisymmetric body (against the closed form); each
+/// matches the order it declares.
+#[test]
+fn strang_and_its_compositions_have_their_orders_on_the_free_body() {
+    let g0 = So3::from_matrix(&r0()).unwrap();
+    let pi0 = Vector3::new(0.5, 1.0, -0.7);
+    let t = 2.0;
+    let full = Matrix3::new(1.0, 0.1, 0.0, 0.1, 2.0, 0.2, 0.0, 0.2, 3.0);
+    let cases = [
+        (
+            RigidBody::new(full).unwrap(),
+            rk4_reference(&full, &r0(), &pi0, t, 20_000),
+        ),
+        (
+            RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+            rk4_reference(
+                &Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+                &r0(),
+                &pi0,
+                t,
+                20_000,
+            ),
+        ),
+        (
+            RigidBody::principal(1.0, 1.0, 2.5).unwrap(),
+            axisymmetric_exact(1.0, 2.5, &r0(), &pi0, t),
+        ),
+    ];
+    for (body, reference) in &cases {
+        let strang = || Splitting::new(body.clone(), pi0, Some(g0)).unwrap();
+        let (p, e) = order_of(strang, t, &[20, 40, 80, 160], reference, pi0.norm());
+        println!("strang: order {p:.3}, finest error {e:.2e}");
+        assert!(
+            (p - f64::from(strang().info().order)).abs() < 0.2,
+            "strang order {p}"
+        );
+        for scheme in [
+            CompositionScheme::triple_jump(4).unwrap(),
+            CompositionScheme::kahan_li_6(),
+        ] {
+            let make = || Composition::new(strang(), scheme.clone()).unwrap();
+            let (p, e) = order_of(make, t, &[10, 14, 20, 28], reference, pi0.norm());
+            println!("{}: order {p:.3}, finest error {e:.2e}", scheme.name());
+            assert!(
+                (p - f64::from(make().info().order)).abs() < 0.2,
+                "{} order {p}",
+                scheme.name()
+            );
+        }
+    }
+}
+
+/// The heavy top: Strang order 2 (against RK4 at h = 1e-4).
+#[test]
+fn strang_is_second_order_on_the_heavy_top() {
+    let inertia = Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0));
+    let chi = Vector3::new(0.1, 0.2, 0.5);
+    let top = HeavyTop::new(inertia, 1.0, 9.81, chi).unwrap();
+    let pi0 = Vector3::new(0.3, 1.0, 2.0);
+    let t = 1.0;
+    let reference = rk4_heavy_top(&inertia, &(chi * 9.81), &r0(), &pi0, t, 10_000);
+    let g0 = So3::from_matrix(&r0()).unwrap();
+    let make = || Splitting::new(top.clone(), pi0, Some(g0)).unwrap();
+    let (p, e) = order_of(make, t, &[40, 80, 160, 320], &reference, pi0.norm());
+    println!("heavy top strang: order {p:.3}, finest {e:.2e}");
+    assert!((p - 2.0).abs() < 0.2, "order {p}");
+}
+
+/// Exact kinetic flow + kicks on the Lagrange top (axisymmetric, χ on the axis): Strang,
+/// Blanes–Moan 4 and 6 have orders 2, 4, 6 against RK4 at h = 5e-5, also with a fast spin
+/// (Π₃ = 20) that the kinetic flow takes exactly.
+#[test]
+fn kinetic_kick_schemes_have_their_orders_on_the_lagrange_top() {
+    let inertia = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 0.4));
+    let chi = Vector3::new(0.0, 0.0, 0.3);
+    let top = HeavyTop::new(inertia, 1.0, 9.81, chi).unwrap();
+    let flow = AxisymmetricFlow::new(top.body()).unwrap();
+    let g0 = So3::from_matrix(&r0()).unwrap();
+    for pi0 in [Vector3::new(0.3, -0.5, 1.0), Vector3::new(0.3, -0.5, 20.0)] {
+        let t = 1.0;
+        let reference = rk4_heavy_top(&inertia, &(chi * 9.81), &r0(), &pi0, t, 40_000);
+        for scheme in SplittingScheme::builtin() {
+            let make = || {
+                KineticKick::new(top.clone(), flow.clone(), scheme.clone(), pi0, Some(g0)).unwrap()
+            };
+            let steps: &[usize] = if scheme.order() == 6 {
+                &[11, 16, 22, 32]
+            } else {
+                &[10, 20, 40, 80]
+            };
+            let (p, e) = order_of(make, t, steps, &reference, pi0.norm());
+            println!(
+                "|Π| = {:.1}, {}: order {p:.3}, finest {e:.2e}",
+                pi0.norm(),
+                scheme.name()
+            );
+            assert!(
+                (p - f64::from(make().info().order)).abs() < 0.2,
+                "{}: order {p}",
+                scheme.name()
+            );
+        }
+    }
+}
+
+/// Without a potential, the kinetic–kick integrator is the exact flow (one step of any size
+/// lands on the closed form).
+#[test]
+fn kinetic_kick_without_potential_is_the_exact_flow() {
+    let body = RigidBody::principal(1.0, 1.0, 2.5).unwrap();
+    let flow = AxisymmetricFlow::new(&body).unwrap();
+    let pi0 = Vector3::new(0.6, -0.4, 1.3);
+    let g0 = So3::from_matrix(&r0()).unwrap();
+    let mut k =
+        KineticKick::new(body, flow, SplittingScheme::blanes_moan_4(), pi0, Some(g0)).unwrap();
+    k.step(7.3).unwrap();
+    let (r, p) = axisymmetric_exact(1.0, 2.5, &r0(), &pi0, 7.3);
+    assert!(
+        (k.momentum() - p).amax() < 1e-14
+            && (k.configuration().unwrap().as_matrix() - r).amax() < 1e-14
+    );
+    assert!(AxisymmetricFlow::new(&RigidBody::principal(1.0, 2.0, 3.0).unwrap()).is_err());
+}
+
+/// Casimir |Π|² and the spatial momentum RΠ at round-off over 10⁶ Strang steps of the free body:
+/// no worse than the random walk of 5·10⁶ plane rotations each rounding c² + s² = 1 by ≲ 1 ulp,
+/// 2ε√(5·10⁶) ≈ 5e-13 (measured 2.6e-13 and 3.6e-13), R on SO(3).
+#[test]
+fn strang_keeps_casimir_and_momentum_map_over_a_million_steps() {
+    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let pi0 = Vector3::new(0.4, 1.0, 0.3);
+    let g0 = So3::from_matrix(&r0()).unwrap();
+    let m0 = r0() * pi0;
+    let mut s = Splitting::new(body, pi0, Some(g0)).unwrap();
+    let (mut dc, mut dm) = (0.0f64, 0.0f64);
+    for k in 0..1_000_000 {
+        s.step(0.01).unwrap();
+        if k % 1000 == 999 {
+            let p = s.momentum();
+            dc = dc.max((p.norm_squared() - pi0.norm_squared()).abs() / pi0.norm_squared());
+            dm = dm.max((s.configuration().unwrap().as_matrix() * p - m0).amax() / m0.norm());
+        }
+    }
+    let r = s.configuration().unwrap().as_matrix();
+    println!(
+        "Casimir {dc:.2e}, momentum map {dm:.2e}, ‖RᵀR − I‖ {:.2e}",
+        (r.transpose() * r - Matrix3::identity()).amax()
+    );
+    assert!(
+        dc < 5e-13 && dm < 5e-13,
+        "Casimir {dc:e}, momentum map {dm:e}"
+    );
+    assert!((r.transpose() * r - Matrix3::identity()).amax() < 1e-14);
+}
+
+/// Energy bounded with no drift over 10⁶ steps (first against last tenth) for the free body and
+/// the heavy top.
+#[test]
+fn strang_energy_does_not_drift() {
+    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let s = Splitting::new(
+        body,
+        Vector3::new(0.4, 1.0, 0.3),
+        Some(So3::from_matrix(&r0()).unwrap()),
+    )
+    .unwrap();
+    let (first, last) = energy_error_tenths(s, 0.05, 1_000_000);
+    println!("free body: first tenth {first:.2e}, last tenth {last:.2e}");
+    assert!(last < 1.5 * first, "drift: {first:e} → {last:e}");
+    let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 9.81, Vector3::new(0.0, 0.1, 0.5)).unwrap();
+    let s = Splitting::new(
+        top,
+        Vector3::new(0.3, 1.0, 2.0),
+        Some(So3::from_matrix(&r0()).unwrap()),
+    )
+    .unwrap();
+    let (first, last) = energy_error_tenths(s, 0.01, 300_000);
+    println!("heavy top: first tenth {first:.2e}, last tenth {last:.2e}");
+    assert!(last < 1.5 * first, "drift: {first:e} → {last:e}");
+}
+
+/// Symmetric methods are time-reversible: n steps forward then n back return to the start, to the
+/// round-off accumulated over 200 steps of 23 sub-flows (≲ 1e-12; a non-symmetric method of order p
+/// would miss by ~n hᵖ⁺¹, 1e-5 for Strang and 1e-7 for Blanes–Moan 6 here).
+#[test]
+fn splittings_are_reversible() {
+    let top = HeavyTop::principal([1.0, 1.0, 0.4], 1.0, 9.81, Vector3::new(0.0, 0.0, 0.3)).unwrap();
+    let flow = AxisymmetricFlow::new(top.body()).unwrap();
+    let pi0 = Vector3::new(0.3, 1.0, 2.0);
+    let g0 = So3::from_matrix(&r0()).unwrap();
+    let mut a = Splitting::new(top.clone(), pi0, Some(g0)).unwrap();
+    let mut b =
+        KineticKick::new(top, flow, SplittingScheme::blanes_moan_6(), pi0, Some(g0)).unwrap();
+    for _ in 0..200 {
+        a.step(0.1).unwrap();
+        b.step(0.1).unwrap();
+    }
+    for _ in 0..200 {
+        a.step(-0.1).unwrap();
+        b.step(-0.1).unwrap();
+    }
+    for (name, p, g) in [
+        ("strang", a.momentum(), *a.configuration().unwrap()),
+        ("kinetic-kick", b.momentum(), *b.configuration().unwrap()),
+    ] {
+        let e = (p - pi0).amax().max((g.as_matrix() - r0()).amax());
+        println!("{name}: back by {e:.2e}");
+        assert!(e < 1e-11, "{name}: back by {e:e}");
+    }
+}
+
+/// A fast-spinning body, |Π| ≈ 100 with h|Ω| from 0.1 to 5: Strang keeps the Casimir at
+/// round-off and the energy bounded (relative error < 1 over 10⁴ steps); from h|Ω| = 1 on, RK4
+/// at the same step drifts by more or diverges.
+#[test]
+fn fast_spin_keeps_invariants_where_rk4_fails() {
+    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let pi0 = Vector3::new(60.0, 50.0, -40.0);
+    let omega = body.angular_velocity(&pi0).norm();
+    let g0 = So3::from_matrix(&r0()).unwrap();
+    for hw in [0.1, 1.0, 5.0] {
+        let h = hw / omega;
+        let mut s = Splitting::new(body.clone(), pi0, Some(g0)).unwrap();
+        let mut rk = QuaternionRk4::new(body.clone(), pi0, Some(g0)).unwrap();
+        let e0 = s.energy();
+        let (mut de, mut dc, mut de_rk) = (0.0f64, 0.0f64, 0.0f64);
+        for _ in 0..10_000 {
+            s.step(h).unwrap();
+            de = de.max((s.energy() - e0).abs() / e0);
+            dc = dc.max((s.casimir().unwrap() - pi0.norm_squared()).abs() / pi0.norm_squared());
+            if rk.step(h).is_ok() {
+                de_rk = de_rk.max(((rk.energy() - e0) / e0).abs());
+            } else {
+                de_rk = f64::INFINITY;
+            }
+        }
+        println!("h|Ω| = {hw}: strang ΔE {de:.2e} ΔC {dc:.2e}; rk4 ΔE {de_rk:.2e}");
+        assert!(dc < 1e-13, "Casimir {dc:e}");
+        assert!(de < 1.0, "energy {de:e}");
+        if hw >= 1.0 {
+            assert!(de < de_rk, "energy {de:e} against RK4 {de_rk:e}");
+        }
+    }
+}
+
+/// NaN and infinite steps are refused with the state untouched; a system with a potential needs g.
+#[test]
+fn bad_input_is_refused_and_leaves_the_state() {
+    let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 9.81, Vector3::new(0.0, 0.1, 0.5)).unwrap();
+    let pi0 = Vector3::new(0.3, 1.0, 2.0);
+    assert_eq!(
+        Splitting::new(top.clone(), pi0, None).unwrap_err(),
+        IntegratorError::MissingConfiguration
+    );
+    let mut s = Splitting::new(top.clone(), pi0, Some(So3::identity())).unwrap();
+    s.step(0.1).unwrap();
+    let before = s.snapshot();
+    for h in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        assert!(s.step(h).is_err());
+        assert_eq!(s.snapshot(), before);
+    }
+    assert!(Splitting::new(top, Vector3::new(f64::NAN, 0.0, 0.0), Some(So3::identity())).is_err());
+    assert!(SplittingScheme::by_name("verlet-9").is_err());
+}
