@@ -56,6 +56,7 @@ pub mod ensemble;
 mod error;
 pub mod euler_arnold;
 pub mod euler_poincare;
+pub mod exact;
 mod integrator;
 pub mod lie_poisson;
 pub mod solver;

@@ -1,0 +1,13 @@
+//! Exact flows: the free rigid body in closed form ([`FreeBodyFlow`], with the elliptic functions
+//! of [`elliptic`]) and the integrator that steps with it ([`ExactFreeBody`]).
+//!
+//! The exact flow is a method of its own (no truncation error, cost independent of the step), the
+//! kinetic part of the splittings [`crate::splitting::KineticKick`] for forced bodies (heavy top,
+//! satellite), and the reference of work-precision measurements on free-body scenes.
+
+pub mod elliptic;
+mod exact_free_body;
+mod free_body_flow;
+
+pub use exact_free_body::ExactFreeBody;
+pub use free_body_flow::FreeBodyFlow;
