@@ -95,7 +95,7 @@ fn elliptic_functions_match_mpmath() {
 #[test]
 fn exact_flow_matches_a_forty_digit_integration_in_every_regime() {
     let data = lines("free_body_reference.txt");
-    assert_eq!(data.len(), 14);
+    assert_eq!(data.len(), 15);
     for l in data {
         let v: Vec<f64> = l[1..].iter().map(|s| num(s)).collect();
         let inertia = Matrix3::from_row_slice(&v[0..9]);

@@ -143,10 +143,12 @@ pub fn amplitude(u: f64, k2: f64, kc2: f64) -> f64 {
     phi
 }
 
-/// Legendre's F(φ, k) = ∫₀^φ dθ/√(1 − k² sin²θ) for |φ| ≤ π/2 (DLMF 19.25.5).
-pub fn incomplete_f(phi: f64, k2: f64) -> f64 {
+/// Legendre's F(φ, k) = ∫₀^φ dθ/√(1 − k² sin²θ) for |φ| ≤ π/2 (DLMF 19.25.5), with
+/// Δ² = 1 − k² sin²φ given: near k = 1 and φ = π/2, F moves by ∂F/∂Δ² ~ Δ⁻², so Δ² must come
+/// from k'² (Δ² = cos²φ + k'² sin²φ), never from a rounded k².
+pub fn incomplete_f(phi: f64, delta2: f64) -> f64 {
     let (s, c) = phi.sin_cos();
-    s * carlson_rf(c * c, 1.0 - k2 * s * s, 1.0)
+    s * carlson_rf(c * c, delta2, 1.0)
 }
 
 /// Legendre's Π(n; φ, k) = ∫₀^φ dθ/((1 − n sin²θ)√(1 − k² sin²θ)) for |φ| ≤ π/2 and

@@ -163,7 +163,10 @@ impl FreeBodyFlow {
         let phi0 = (sigma * q[1] / a2).atan2(q[0] / a1);
         let j0 = (phi0 / PI).round();
         let phi0r = phi0 - j0 * PI;
-        let u0 = if j0 == 0.0 { 0.0 } else { 2.0 * kk * j0 } + incomplete_f(phi0r, k2);
+        // Δ²(φ₀) = dn² u₀ = cos²φ₀ + k'² sin²φ₀ (from k'², see `incomplete_f`).
+        let (s0, c0) = phi0r.sin_cos();
+        let delta0 = c0 * c0 + kc2 * s0 * s0;
+        let u0 = if j0 == 0.0 { 0.0 } else { 2.0 * kk * j0 } + incomplete_f(phi0r, delta0);
         let u = u0 + lambda * tau;
         let j = if kk.is_finite() {
             (u / (2.0 * kk)).round()
@@ -189,7 +192,10 @@ impl FreeBodyFlow {
         let beta = i3 * (i2 - i1) / (i1 * (i3 - i2));
         let sb = (1.0 + beta).sqrt();
         let g_of = |phi: f64| (sb * phi.sin()).atan2(phi.cos()) / sb;
-        let pi_of = |phi: f64| incomplete_pi(-beta, phi, kc2 + k2 * phi.cos().powi(2));
+        let pi_of = |phi: f64| {
+            let (s, c) = phi.sin_cos();
+            incomplete_pi(-beta, phi, c * c + kc2 * s * s)
+        };
         let dj = j - j0;
         let whole_pi = if dj == 0.0 {
             0.0
