@@ -20,8 +20,9 @@
 use crate::lie_poisson::check_state;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
+use core::cell::OnceCell;
 use lie_groups::{LieGroup, So3};
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 /// Explicit RK4 on (q, Π) with quaternion renormalisation after each step, for any system on SO(3).
 ///
@@ -44,9 +45,9 @@ pub struct QuaternionRk4<S: System<So3>> {
     system: S,
     t: f64,
     pi: Vector3<f64>,
-    /// The unit quaternion and the rotation matrix it represents (kept in step, so that
-    /// [`Integrator::configuration`] can return a reference).
-    attitude: Option<(Quaternion<f64>, So3)>,
+    /// The unit quaternion and the rotation matrix it represents, computed only when
+    /// [`Integrator::configuration`] asks for it (a cell, so that it can return a reference).
+    attitude: Option<(Quaternion<f64>, OnceCell<So3>)>,
 }
 
 /// `½ q ⊗ (0, Ω)`: the quaternion velocity of `Ṙ = R Ω̂`.
@@ -55,10 +56,26 @@ fn quaternion_rate(q: &Quaternion<f64>, omega: &Vector3<f64>) -> Quaternion<f64>
     (q * Quaternion::from_imag(*omega)) * 0.5
 }
 
-/// The rotation R(q/|q|) of a nonzero quaternion.
+/// The rotation R(q/|q|) of a nonzero quaternion, from the homogeneous form
+/// `R = (1/|q|²)·[(w² − |v|²)I + 2vvᵀ + 2w v̂]`, q = (w, v): no square root, one division.
 #[inline]
 fn rotation(q: &Quaternion<f64>) -> So3 {
-    So3::from(UnitQuaternion::from_quaternion(*q))
+    let (w, x, y, z) = (q.w, q.i, q.j, q.k);
+    let s = 2.0 / (w * w + x * x + y * y + z * z);
+    let (wx, wy, wz) = (s * w * x, s * w * y, s * w * z);
+    let (xx, xy, xz) = (s * x * x, s * x * y, s * x * z);
+    let (yy, yz, zz) = (s * y * y, s * y * z, s * z * z);
+    So3::from_matrix_unchecked(&Matrix3::new(
+        1.0 - (yy + zz),
+        xy - wz,
+        xz + wy,
+        xy + wz,
+        1.0 - (xx + zz),
+        yz - wx,
+        xz - wy,
+        yz + wx,
+        1.0 - (xx + yy),
+    ))
 }
 
 impl<S: System<So3>> QuaternionRk4<S> {
@@ -67,7 +84,7 @@ impl<S: System<So3>> QuaternionRk4<S> {
     pub fn new(system: S, pi0: Vector3<f64>, r0: Option<So3>) -> Result<Self, IntegratorError> {
         check_state(&system, &pi0, "momentum Π", r0.as_ref())?;
         // R₀ is kept exactly as given (not re-derived from q₀) until the first step.
-        let attitude = r0.map(|r| (UnitQuaternion::from(r).into_inner(), r));
+        let attitude = r0.map(|r| (UnitQuaternion::from(r).into_inner(), OnceCell::from(r)));
         Ok(Self {
             system,
             t: 0.0,
@@ -147,7 +164,7 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
                 }
                 // Renormalisation: the one projection this baseline makes.
                 let q1 = q1 / n;
-                self.attitude = Some((q1, rotation(&q1)));
+                self.attitude = Some((q1, OnceCell::new()));
                 self.pi = pi1;
             }
         }
@@ -164,7 +181,9 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
         self.system.velocity(&self.pi)
     }
     fn configuration(&self) -> Option<&So3> {
-        self.attitude.as_ref().map(|(_, r)| r)
+        self.attitude
+            .as_ref()
+            .map(|(q, r)| r.get_or_init(|| rotation(q)))
     }
     fn energy(&self) -> f64 {
         self.system.energy(&self.pi, self.configuration())
@@ -179,5 +198,24 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
     /// nothing else is kept.
     fn info(&self) -> crate::MethodInfo {
         crate::MethodInfo::plain(4)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The homogeneous formula against nalgebra's normalise-then-convert, for unit and scaled q.
+    #[test]
+    fn rotation_of_a_scaled_quaternion_is_that_of_the_unit_one() {
+        for (q, scale) in [
+            (Quaternion::new(0.3, -0.5, 0.8, 0.1), 1.0),
+            (Quaternion::new(-0.9, 0.1, 0.2, -0.4), 3.7),
+            (Quaternion::new(1e-3, 1.0, -2.0, 0.5), 1e-5),
+        ] {
+            let want = So3::from(UnitQuaternion::from_quaternion(q));
+            let got = rotation(&(q * scale));
+            assert!((got.as_matrix() - want.as_matrix()).amax() < 4e-16);
+        }
     }
 }

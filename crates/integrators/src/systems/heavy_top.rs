@@ -145,7 +145,8 @@ impl HeavyTop {
     }
     /// The vertical in the body frame, `Γ = Rᵀ e₃`.
     pub fn vertical_in_body(r: &So3) -> Vector3<f64> {
-        r.as_matrix().tr_mul(&Vector3::z())
+        let m = r.as_matrix();
+        Vector3::new(m[(2, 0)], m[(2, 1)], m[(2, 2)])
     }
     /// The spatial vertical angular momentum `⟨R Π, e₃⟩ = Π·Γ`, conserved by the flow and, to
     /// round-off, by the Lie–Poisson integrators.
