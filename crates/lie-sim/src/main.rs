@@ -223,10 +223,17 @@ fn cmd_run(
     say!("  theta        {}", m.theta_label());
     if let Some(c) = &m.composition {
         say!(
-            "  composition  {} (order {} from {} steps of the θ = ½ method per step)",
+            "  composition  {} (order {} from {} steps of the symmetric base method per step)",
             c.name(),
             c.order(),
             c.stages()
+        );
+    }
+    if let Some(s) = &m.splitting {
+        say!(
+            "  splitting    {} (order {}: exact kinetic flows between potential kicks)",
+            s.name(),
+            s.order()
         );
     }
     say!(

@@ -14,8 +14,10 @@
 //! attitude = { rotation_vector = [0.0, 0.0, 0.0] }   # or { quaternion = [w, x, y, z] }, { matrix = [[..], ..] }
 //!
 //! [integrator]
-//! method = "lie-poisson"            # lie-poisson | euler-poincare | euler-arnold | rk4 | rkmk4
-//! tau = "cayley"                    # exp | cayley (rk4: none; rkmk4: exp only)
+//! method = "lie-poisson"            # lie-poisson | euler-poincare | euler-arnold | rk4 | rkmk4 |
+//!                                   #   splitting | kinetic-kick | exact
+//! tau = "cayley"                    # exp | cayley (rk4, splitting, kinetic-kick, exact: none;
+//!                                   #   rkmk4: exp only)
 //! theta = 0.5                       # θ ∈ [0, 1] of the discretization map (Lie methods only)
 //! step = 0.01                       # h > 0
 //! duration = 100.0                  # T > 0; ⌈T/h⌉ steps, the last one shortened to land on T
@@ -25,6 +27,7 @@
 //! # tolerance = 1e-14               # implicit solver options (default: the integrators crate's)
 //! # max_iterations = 50
 //! # composition = "kahan-li-6"      # optional: compose the θ = ½ method to order 4, 6, 8, … (below)
+//! # splitting = "blanes-moan-4"     # kinetic-kick only: strang (default) | blanes-moan-4 | blanes-moan-6
 //!
 //! [output]
 //! stride = 10                       # write every 10th step (default 1); t = 0 and t = T always
@@ -40,6 +43,17 @@
 //! `suzuki-4|6|8|10`, `mclachlan-4`, `kahan-li-6`, `kahan-li-8`, `mclachlan-8`,
 //! `sofroniou-spaletta-10`): one step of size h is the steps γ₁h, …, γ_s h of the base method.
 //! It needs a symmetric base: `lie-poisson`, `euler-poincare` or `euler-arnold` with θ = 0.5.
+//!
+//! The explicit methods of `integrators::splitting` and `integrators::exact`:
+//! - `splitting`: Strang splitting of h into pieces with exact flows (the free body's rotations
+//!   about its principal axes, the SE(3) and SE(2) bodies' rotations and translations) and the
+//!   potential's kick; order 2, symmetric (so `composition` applies), Casimirs to round-off. Every
+//!   system but `geodesic-so-n` has one.
+//! - `kinetic-kick`: the exact free-body flow (Jacobi elliptic functions) between kicks of the
+//!   potential, with the coefficients `splitting` (order 2, 4, 6): `heavy-top` and
+//!   `free-rigid-body`. The kinetic flow is exact, so a fast spin costs no accuracy.
+//! - `exact`: the exact free rigid body flow, any step, cost independent of the step
+//!   (`free-rigid-body` only).
 //!
 //! `euler-arnold` is the Euler–Poincaré integrator of the quadratic Lagrangian l(ξ) = ½⟨𝕀ξ, ξ⟩,
 //! with 𝕀 = (∂²h/∂μ²)⁻¹ taken from the system: only for systems without a potential.
@@ -68,6 +82,7 @@
 //! [`Scene`]. Each stage reports one error naming the field.
 
 use crate::error::SimError;
+use integrators::splitting::SplittingScheme;
 use integrators::CompositionScheme;
 use lie_groups::{LieGroup, So3};
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector2, Vector3, Vector6};
@@ -138,6 +153,15 @@ pub enum Method {
     Rk4,
     /// Runge–Kutta–Munthe-Kaas of order 4 on the group.
     Rkmk4,
+    /// Explicit Strang splitting of h into pieces with exact flows (one-parameter subgroups) and
+    /// the potential's kick (`integrators::splitting::Splitting`): order 2, symmetric, Poisson.
+    Splitting,
+    /// The exact free-body flow with potential kicks (`integrators::splitting::KineticKick` with
+    /// `integrators::exact::FreeBodyFlow`), coefficients from `splitting`: order 2, 4 or 6.
+    KineticKick,
+    /// The exact free rigid body flow (`integrators::exact::ExactFreeBody`): Jacobi elliptic
+    /// functions, any step, cost independent of h.
+    Exact,
 }
 
 impl Method {
@@ -149,6 +173,9 @@ impl Method {
             Self::EulerArnold => "euler-arnold",
             Self::Rk4 => "rk4",
             Self::Rkmk4 => "rkmk4",
+            Self::Splitting => "splitting",
+            Self::KineticKick => "kinetic-kick",
+            Self::Exact => "exact",
         }
     }
 
@@ -219,6 +246,8 @@ pub struct MethodSpec {
     pub theta: Option<f64>,
     /// The composition scheme raising the symmetric (θ = ½) base method to order 4, 6, 8, ….
     pub composition: Option<CompositionScheme>,
+    /// The coefficients of `kinetic-kick` (Strang, Blanes–Moan 4 or 6).
+    pub splitting: Option<SplittingScheme>,
 }
 
 impl MethodSpec {
@@ -230,11 +259,14 @@ impl MethodSpec {
     pub fn theta_label(&self) -> String {
         self.theta.map_or_else(|| "-".into(), |t| format!("{t}"))
     }
-    /// The composition scheme's name for tables (`-` without one).
+    /// The composition scheme's name for tables, or the kinetic–kick coefficients' (`-` without
+    /// either).
     pub fn composition_label(&self) -> String {
-        self.composition
-            .as_ref()
-            .map_or_else(|| "-".into(), |c| c.name().into())
+        match (&self.composition, &self.splitting) {
+            (Some(c), _) => c.name().into(),
+            (None, Some(s)) => s.name().into(),
+            (None, None) => "-".into(),
+        }
     }
     /// A method without τ, θ or composition (rk4), or with the given τ (rkmk4).
     pub fn plain(method: Method, tau: Option<TauKind>) -> Self {
@@ -243,6 +275,7 @@ impl MethodSpec {
             tau,
             theta: None,
             composition: None,
+            splitting: None,
         }
     }
 }
@@ -253,6 +286,9 @@ impl fmt::Display for MethodSpec {
             write!(f, "{} ∘ ", c.name())?;
         }
         write!(f, "{}", self.method)?;
+        if let Some(s) = &self.splitting {
+            write!(f, " ({})", s.name())?;
+        }
         match (self.tau, self.theta) {
             (Some(t), Some(th)) => write!(f, " (τ = {t}, θ = {th})"),
             (Some(t), None) => write!(f, " (τ = {t})"),
@@ -383,6 +419,8 @@ pub struct RawIntegrator {
     /// Composition scheme around a symmetric base method (any name
     /// `integrators::CompositionScheme` parses, e.g. `kahan-li-6`).
     pub composition: Option<String>,
+    /// Coefficients of `kinetic-kick`: `strang`, `blanes-moan-4` or `blanes-moan-6`.
+    pub splitting: Option<String>,
 }
 
 /// `[sweep]`: many initial momenta drawn around the scene's μ₀, for `lie-sim sweep`.
@@ -720,11 +758,8 @@ impl Scene {
         if stride == 0 {
             return Err(bad("output.stride", "must be at least 1, got 0".into()));
         }
-        if method.method == Method::EulerArnold && system.has_potential() {
-            return Err(bad(
-                "integrator.method",
-                euler_arnold_needs_kinetic(system.kind()),
-            ));
+        if let Some(why) = inapplicable(method.method, &system) {
+            return Err(bad("integrator.method", why));
         }
         let sweep = match &raw.sweep {
             None => None,
@@ -806,7 +841,13 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
                 format!("rk4 integrates quaternions and takes no τ map (got \"{t}\")"),
             ))
         }
-        (Method::Rk4, None) => None,
+        (Method::Splitting | Method::KineticKick | Method::Exact, Some(t)) => {
+            return Err((
+                "integrator.tau".into(),
+                format!("{m} composes exact flows and takes no τ map (got \"{t}\")"),
+            ))
+        }
+        (Method::Rk4 | Method::Splitting | Method::KineticKick | Method::Exact, None) => None,
         (Method::Rkmk4, None | Some(TauKind::Exp)) => Some(TauKind::Exp),
         (Method::Rkmk4, Some(t)) => {
             return Err((
@@ -862,10 +903,11 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
                     ),
                 )
             })?;
-            let symmetric_base = matches!(
+            let symmetric_base = (matches!(
                 m,
                 Method::LiePoisson | Method::EulerPoincare | Method::EulerArnold
-            ) && theta == Some(0.5);
+            ) && theta == Some(0.5))
+                || m == Method::Splitting;
             if !symmetric_base {
                 let base = match theta {
                     Some(th) => format!("{m} with θ = {th}"),
@@ -875,7 +917,7 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
                     field.into(),
                     format!(
                         "{} needs a symmetric base method (lie-poisson, euler-poincare or \
-                         euler-arnold with θ = 0.5), got {base}",
+                         euler-arnold with θ = 0.5, or splitting), got {base}",
                         scheme.name()
                     ),
                 ));
@@ -883,12 +925,72 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
             Some(scheme)
         }
     };
+    let splitting = match (&it.splitting, m) {
+        (None, Method::KineticKick) => Some(SplittingScheme::strang()),
+        (None, _) => None,
+        (Some(name), Method::KineticKick) => {
+            Some(SplittingScheme::by_name(name).map_err(|_| {
+                let known: Vec<&str> = SplittingScheme::builtin()
+                    .iter()
+                    .map(|s| s.name())
+                    .collect();
+                (
+                    "integrator.splitting".to_string(),
+                    format!(
+                        "unknown splitting scheme \"{name}\" (known: {})",
+                        known.join(", ")
+                    ),
+                )
+            })?)
+        }
+        (Some(name), _) => {
+            return Err((
+                "integrator.splitting".into(),
+                format!(
+                    "the coefficients \"{name}\" are for method = \"kinetic-kick\"; {m} takes \
+                     none (method = \"splitting\" is Strang, composed with `composition`)"
+                ),
+            ))
+        }
+    };
     Ok(MethodSpec {
         method: m,
         tau,
         theta,
         composition,
+        splitting,
     })
+}
+
+/// Why `method` does not apply to `system` (`None` when it does): Euler–Arnold with a potential,
+/// a splitting of the SO(n) geodesic, the kinetic–kick off SO(3), the exact flow off the free
+/// body. The one place these rules live: the scene check and `sim::dispatch` both ask here.
+pub fn inapplicable(method: Method, system: &System) -> Option<String> {
+    match method {
+        Method::EulerArnold if system.has_potential() => {
+            Some(euler_arnold_needs_kinetic(system.kind()))
+        }
+        Method::Splitting if matches!(system, System::GeodesicSoN(_)) => Some(
+            "splitting needs h = Σ hᵢ with each piece's flow exact and explicit; the SO(n) \
+             geodesic h = ½⟨M, J⁻¹M⟩ has no such splitting here (use lie-poisson or rkmk4)"
+                .into(),
+        ),
+        Method::KineticKick
+            if !matches!(system, System::FreeRigidBody(_) | System::HeavyTop(_)) =>
+        {
+            Some(
+                "kinetic-kick needs the exact flow of the kinetic energy, known here for the \
+                 rigid body on SO(3) only (free-rigid-body, heavy-top); use splitting"
+                    .into(),
+            )
+        }
+        Method::Exact if !matches!(system, System::FreeRigidBody(_)) => Some(
+            "the exact flow is known in closed form only for the free rigid body; with a \
+             potential use kinetic-kick (heavy-top) or splitting"
+                .into(),
+        ),
+        _ => None,
+    }
 }
 
 /// The refusal of `euler-arnold` on a system with a potential.

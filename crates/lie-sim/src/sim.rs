@@ -8,10 +8,11 @@
 
 use crate::error::SimError;
 use crate::scene::{
-    euler_arnold_needs_kinetic, GeodesicSoN, Method, MethodSpec, SolverChoice, SolverOptions,
-    System, TauKind,
+    inapplicable, GeodesicSoN, Method, MethodSpec, SolverChoice, SolverOptions, System, TauKind,
 };
 use faer::{Col, Mat};
+use integrators::exact::{ExactFreeBody, FreeBodyFlow};
+use integrators::splitting::{KineticKick, SplitSystem, Splitting, SplittingScheme};
 use integrators::systems::{
     GeneralizedRigidBody, HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, RigidBody,
     RigidBodySe3 as RigidBodySe3System,
@@ -133,20 +134,16 @@ pub fn dispatch<J: Job>(
         what: what(),
         message: e.to_string(),
     };
-    match method.method {
-        Method::EulerArnold if system.has_potential() => {
-            return Err(SimError::Inapplicable {
-                what: what(),
-                why: euler_arnold_needs_kinetic(system.kind()),
-            })
-        }
-        Method::Rk4 if !matches!(system, System::FreeRigidBody(_) | System::HeavyTop(_)) => {
-            return Err(unavailable(
-                "rk4 integrates quaternions, so only the SO(3) systems (free-rigid-body, \
-                 heavy-top); use rkmk4 on other groups",
-            ))
-        }
-        _ => {}
+    if let Some(why) = inapplicable(method.method, system) {
+        return Err(SimError::Inapplicable { what: what(), why });
+    }
+    if method.method == Method::Rk4
+        && !matches!(system, System::FreeRigidBody(_) | System::HeavyTop(_))
+    {
+        return Err(unavailable(
+            "rk4 integrates quaternions, so only the SO(3) systems (free-rigid-body, \
+             heavy-top); use rkmk4 on other groups",
+        ));
     }
     let mut config = SolverConfig::default();
     if let Some(kind) = solver.kind {
@@ -178,7 +175,7 @@ pub fn dispatch<J: Job>(
         System::FreeRigidBody(p) => {
             let body = RigidBody::new(p.inertia).map_err(built)?;
             job.run(body, p.momentum, so3(&p.attitude)?, |s, mu, g| {
-                b.make_so3(s, mu, g)
+                b.make_rigid_body(s, mu, g)
             })
             .map_err(built)
         }
@@ -186,7 +183,7 @@ pub fn dispatch<J: Job>(
             let top = HeavyTopSystem::new(p.inertia, p.mass, p.gravity, p.center_of_mass)
                 .map_err(built)?;
             job.run(top, p.momentum, so3(&p.attitude)?, |s, mu, g| {
-                b.make_so3(s, mu, g)
+                b.make_heavy_top(s, mu, g)
             })
             .map_err(built)
         }
@@ -196,14 +193,14 @@ pub fn dispatch<J: Job>(
                 let sat =
                     RigidBodySe3System::satellite(p.mass, p.inertia, p.gravitational_parameter)
                         .map_err(built)?;
-                job.run(sat, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                job.run(sat, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g))
                     .map_err(built)
             } else {
                 let free = WithCasimir::<Se3, _> {
                     inner: RigidBodySe3System::free(p.mass, p.inertia).map_err(built)?,
                     casimir: |mu: &Vector6<f64>| mu.fixed_rows::<3>(3).norm_squared(),
                 };
-                job.run(free, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                job.run(free, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g))
                     .map_err(built)
             }
         }
@@ -214,14 +211,14 @@ pub fn dispatch<J: Job>(
                 .map_err(built)?;
             let g0 = reconstruct.then(|| Se2::new(So2::from_angle(p.angle), p.position));
             if system.has_potential() {
-                job.run(body, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                job.run(body, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g))
                     .map_err(built)
             } else {
                 let free = WithCasimir::<Se2, _> {
                     inner: body,
                     casimir: |mu: &Vector3<f64>| mu[1] * mu[1] + mu[2] * mu[2],
                 };
-                job.run(free, p.momentum, g0, |s, mu, g| b.make(s, mu, g))
+                job.run(free, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g))
                     .map_err(built)
             }
         }
@@ -352,13 +349,88 @@ impl Builder {
                     ),
                 }
             }
-            (Method::Rk4, _) => Err(IntegratorError::InvalidParameter {
-                reason: format!("{} is not built on {}", self.method.method, G::name()),
-            }),
+            (Method::Rk4 | Method::Splitting | Method::KineticKick | Method::Exact, _) => {
+                Err(IntegratorError::InvalidParameter {
+                    reason: format!(
+                        "{} is not built for this system on {}",
+                        self.method.method,
+                        G::name()
+                    ),
+                })
+            }
         }
     }
 
-    /// As [`Builder::make`], plus RK4 on (quaternion, Π) for systems on SO(3).
+    /// As [`Builder::make`], plus the Strang splitting of a system that declares its pieces.
+    fn make_split<G, S>(
+        &self,
+        system: S,
+        mu0: G::Algebra,
+        g0: Option<G>,
+    ) -> Result<Boxed<G>, IntegratorError>
+    where
+        G: CayleyGroup + 'static,
+        S: SplitSystem<G> + 'static,
+    {
+        match self.method.method {
+            Method::Splitting => {
+                composed(Splitting::new(system, mu0, g0)?, &self.method.composition)
+            }
+            _ => self.make(system, mu0, g0),
+        }
+    }
+
+    /// The kinetic–kick splitting with the exact free-body flow of `body`.
+    fn kinetic_kick<S>(
+        &self,
+        system: S,
+        body: &RigidBody,
+        mu0: Vector3<f64>,
+        g0: Option<So3>,
+    ) -> Result<Boxed<So3>, IntegratorError>
+    where
+        S: integrators::System<So3> + 'static,
+    {
+        let scheme = self
+            .method
+            .splitting
+            .clone()
+            .unwrap_or_else(SplittingScheme::strang);
+        let flow = FreeBodyFlow::new(body);
+        Ok(Boxed::new(KineticKick::new(system, flow, scheme, mu0, g0)?))
+    }
+
+    /// The free rigid body: every method, the exact flow and the kinetic–kick included.
+    fn make_rigid_body(
+        &self,
+        body: RigidBody,
+        mu0: Vector3<f64>,
+        g0: Option<So3>,
+    ) -> Result<Boxed<So3>, IntegratorError> {
+        match self.method.method {
+            Method::Exact => Ok(Boxed::new(ExactFreeBody::new(body, mu0, g0)?)),
+            Method::KineticKick => self.kinetic_kick(body.clone(), &body, mu0, g0),
+            _ => self.make_so3(body, mu0, g0),
+        }
+    }
+
+    /// The heavy top: every method, the kinetic–kick with the exact flow of its body included.
+    fn make_heavy_top(
+        &self,
+        top: HeavyTopSystem,
+        mu0: Vector3<f64>,
+        g0: Option<So3>,
+    ) -> Result<Boxed<So3>, IntegratorError> {
+        match self.method.method {
+            Method::KineticKick => {
+                let body = top.body().clone();
+                self.kinetic_kick(top, &body, mu0, g0)
+            }
+            _ => self.make_so3(top, mu0, g0),
+        }
+    }
+
+    /// As [`Builder::make_split`], plus RK4 on (quaternion, Π) for systems on SO(3).
     fn make_so3<S>(
         &self,
         system: S,
@@ -366,11 +438,11 @@ impl Builder {
         g0: Option<So3>,
     ) -> Result<Boxed<So3>, IntegratorError>
     where
-        S: integrators::System<So3> + 'static,
+        S: SplitSystem<So3> + 'static,
     {
         match self.method.method {
             Method::Rk4 => Ok(Boxed::new(QuaternionRk4::new(system, mu0, g0)?)),
-            _ => self.make(system, mu0, g0),
+            _ => self.make_split(system, mu0, g0),
         }
     }
 }
@@ -513,6 +585,18 @@ impl<G: LieGroup, S: integrators::System<G>> integrators::System<G> for WithCasi
     }
     fn casimir(&self, mu: &G::Algebra) -> Option<f64> {
         Some((self.casimir)(mu))
+    }
+}
+
+impl<G: LieGroup, S: SplitSystem<G>> SplitSystem<G> for WithCasimir<G, S> {
+    fn pieces(&self) -> usize {
+        self.inner.pieces()
+    }
+    fn piece_velocity(&self, i: usize, mu: &G::Algebra) -> G::Algebra {
+        self.inner.piece_velocity(i, mu)
+    }
+    fn piece_flow(&self, i: usize, t: f64, mu: &mut G::Algebra, g: Option<&mut G>) {
+        self.inner.piece_flow(i, t, mu, g)
     }
 }
 

@@ -1,12 +1,15 @@
 //! `lie-sim trade`: the speed–accuracy trade of every method that applies to a scene.
 //!
 //! Every candidate method (each Lie integrator × τ ∈ {exp, cayley} × θ ∈ {0, ½, 1}, the
-//! compositions [`COMPOSITIONS`] of the θ = ½ Lie–Poisson method for each τ, plus rk4 and rkmk4)
-//! runs the scene over a ladder of steps h₀, h₀/2, …, h₀/2^{L−1} (h₀ the scene's step); a
+//! compositions [`COMPOSITIONS`] of the θ = ½ Lie–Poisson method for each τ, the Strang splitting
+//! and its compositions [`SPLITTING_COMPOSITIONS`], the kinetic–kick splittings (Strang,
+//! Blanes–Moan 4 and 6), the exact free-body flow, rk4 and rkmk4) runs the scene over a ladder of
+//! steps h₀, h₀/2, …, h₀/2^{L−1} (h₀ the scene's step; the exact flow also in one step to T); a
 //! composite step of size h is s base steps. Methods that do not apply to the system (euler-arnold
-//! with a potential, rk4 off SO(3)) are left out. Each run is compared at the final time T with a
-//! reference solution: the order-8 composition at a step smaller than the finest of the ladder
-//! (see [`reference`]). The table reports, per run, the cost (ns per step, total time),
+//! with a potential, rk4 off SO(3), the exact flow off the free body, …) are left out. Each run is
+//! compared at the final time T with a reference solution: the exact flow on the free rigid body,
+//! elsewhere the order-8 composition at a step smaller than the finest of the ladder (see
+//! [`reference`]). The table reports, per run, the cost (ns per step, total time),
 //! the error at T and the maximum relative energy error.
 //!
 //! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
@@ -18,8 +21,9 @@ use crate::error::SimError;
 use crate::output::write_atomic;
 use crate::plot::{plot_loglog, Curve};
 use crate::run::relative_error;
-use crate::scene::{steps_for, Method, MethodSpec, Scene, TauKind};
+use crate::scene::{steps_for, Method, MethodSpec, Scene, System, TauKind};
 use crate::sim::{build, Simulation};
+use integrators::splitting::SplittingScheme;
 use integrators::CompositionScheme;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -71,6 +75,7 @@ pub fn candidates() -> Vec<MethodSpec> {
                     tau: Some(tau),
                     theta: Some(theta),
                     composition: None,
+                    splitting: None,
                 });
             }
         }
@@ -82,12 +87,42 @@ pub fn candidates() -> Vec<MethodSpec> {
                 tau: Some(tau),
                 theta: Some(0.5),
                 composition: Some(scheme(name)),
+                splitting: None,
             });
         }
     }
+    v.push(MethodSpec::plain(Method::Splitting, None));
+    for name in SPLITTING_COMPOSITIONS {
+        v.push(MethodSpec {
+            composition: Some(scheme(name)),
+            ..MethodSpec::plain(Method::Splitting, None)
+        });
+    }
+    for s in SplittingScheme::builtin() {
+        v.push(MethodSpec {
+            splitting: Some(s),
+            ..MethodSpec::plain(Method::KineticKick, None)
+        });
+    }
+    v.push(MethodSpec::plain(Method::Exact, None));
     v.push(MethodSpec::plain(Method::Rk4, None));
     v.push(MethodSpec::plain(Method::Rkmk4, Some(TauKind::Exp)));
     v
+}
+
+/// The compositions of the Strang splitting in the trade: orders 4 and 6.
+pub const SPLITTING_COMPOSITIONS: [&str; 2] = ["triple-jump-4", "kahan-li-6"];
+
+/// The steps a method runs in the trade: the ladder, and for the exact flow (whose error does not
+/// depend on h and whose cost per step does not depend on h either) one step to T first.
+fn steps_of(m: &MethodSpec, ladder: &[f64], duration: f64) -> Vec<f64> {
+    if m.method == Method::Exact {
+        std::iter::once(duration)
+            .chain(ladder.iter().copied())
+            .collect()
+    } else {
+        ladder.to_vec()
+    }
 }
 
 /// The state compared at the final time.
@@ -190,25 +225,38 @@ pub struct Reference {
     pub estimated_error: f64,
 }
 
-/// The reference at T: Kahan–Li's order-8 composition of the θ = ½ Lie–Poisson method with
-/// τ = cayley (available for every system) at `h_min` / [`REFERENCE_REFINEMENT_ORDER8`]; its
-/// error is estimated by the same method at twice that step. Order 8 keeps the reference's error
+/// The reference at T. On the free rigid body: the exact flow (`exact`) in one step to T, its
+/// error estimated by the same flow in steps of `h_min` (the two differ by the random walk of
+/// roundings, ~1e-14). Elsewhere: Kahan–Li's order-8 composition of the θ = ½ Lie–Poisson method
+/// with τ = cayley (available for every system) at `h_min` / [`REFERENCE_REFINEMENT_ORDER8`], its
+/// error estimated by the same method at twice that step. Order 8 keeps the reference's error
 /// below that of every method of the ladder at its finest step, including the order-6 and order-8
 /// compositions, whose errors a fourth-order reference could not resolve.
 pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
+    let run = |m: &MethodSpec, h: f64| -> Result<FinalState, SimError> {
+        let mut sim = build(&scene.system, m, scene.reconstruct, &scene.solver)?;
+        Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
+    };
+    if matches!(scene.system, System::FreeRigidBody(_)) {
+        let m = MethodSpec::plain(Method::Exact, None);
+        let fine = run(&m, scene.duration)?;
+        let coarse = run(&m, h_min)?;
+        return Ok(Reference {
+            estimated_error: coarse.error(&fine),
+            state: fine,
+            description: format!("{m}: one step to T = {}", scene.duration),
+        });
+    }
     let h_ref = h_min / REFERENCE_REFINEMENT_ORDER8;
     let m = MethodSpec {
         method: Method::LiePoisson,
         tau: Some(TauKind::Cayley),
         theta: Some(0.5),
         composition: Some(CompositionScheme::kahan_li_8()),
+        splitting: None,
     };
-    let run = |h: f64| -> Result<FinalState, SimError> {
-        let mut sim = build(&scene.system, &m, scene.reconstruct, &scene.solver)?;
-        Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
-    };
-    let fine = run(h_ref)?;
-    let coarse = run(2.0 * h_ref)?;
+    let fine = run(&m, h_ref)?;
+    let coarse = run(&m, 2.0 * h_ref)?;
     Ok(Reference {
         estimated_error: coarse.error(&fine),
         state: fine,
@@ -269,7 +317,7 @@ pub fn trade(
     let mut unavailable = Vec::new();
     let mut inapplicable = Vec::new();
     for m in candidates() {
-        for &h in &ladder {
+        for h in steps_of(&m, &ladder, scene.duration) {
             let mut best: Option<Result<Timed, SimError>> = None;
             for _ in 0..repeats.max(1) {
                 let mut sim = match build(&scene.system, &m, scene.reconstruct, &scene.solver) {
@@ -502,24 +550,42 @@ mod tests {
     }
 
     #[test]
-    fn candidates_cover_every_lie_method_tau_theta_the_compositions_and_the_baselines() {
-        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + rk4 + rkmk4.
-        assert_eq!(candidates().len(), 26);
+    fn candidates_cover_every_lie_method_tau_theta_the_compositions_the_splittings_and_the_baselines(
+    ) {
+        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + splitting (plain, 2 compositions)
+        // + kinetic-kick × 3 schemes + exact + rk4 + rkmk4.
+        assert_eq!(candidates().len(), 33);
         let composed: Vec<_> = candidates()
             .into_iter()
             .filter(|m| m.composition.is_some())
             .collect();
-        assert_eq!(composed.len(), 6);
+        assert_eq!(composed.len(), 8);
         assert!(composed
             .iter()
-            .all(|m| m.method == Method::LiePoisson && m.theta == Some(0.5)));
+            .all(|m| (m.method == Method::LiePoisson && m.theta == Some(0.5))
+                || m.method == Method::Splitting));
+        let kicks: Vec<_> = candidates()
+            .into_iter()
+            .filter(|m| m.method == Method::KineticKick)
+            .map(|m| m.splitting.unwrap().order())
+            .collect();
+        assert_eq!(kicks, [2, 4, 6]);
+    }
+
+    #[test]
+    fn the_exact_flow_also_runs_in_one_step() {
+        let ladder = [0.1, 0.05];
+        let exact = MethodSpec::plain(Method::Exact, None);
+        assert_eq!(steps_of(&exact, &ladder, 10.0), [10.0, 0.1, 0.05]);
+        let rk4 = MethodSpec::plain(Method::Rk4, None);
+        assert_eq!(steps_of(&rk4, &ladder, 10.0), ladder);
     }
 
     #[test]
     fn trade_compositions_are_builtin_schemes() {
-        for name in COMPOSITIONS {
+        for name in COMPOSITIONS.iter().chain(&SPLITTING_COMPOSITIONS) {
             let s: CompositionScheme = name.parse().unwrap();
-            assert_eq!(s.name(), name);
+            assert_eq!(s.name(), *name);
         }
     }
 

@@ -329,10 +329,23 @@ fn trade_writes_a_work_precision_table_and_plot() {
         lines.next().unwrap(),
         "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,failure"
     );
-    // (lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, 3 compositions × 2 τ, rk4,
-    // rkmk4) × 2 steps.
+    // (lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, 3 compositions × 2 τ, splitting
+    // and its 2 compositions, kinetic-kick × 3 coefficient sets, rk4, rkmk4) × 2 steps, and the
+    // exact flow in one step and at the 2 steps.
     let rows: Vec<&str> = lines.collect();
-    assert_eq!(rows.len(), 52, "{text}");
+    assert_eq!(rows.len(), 67, "{text}");
+    for (prefix, n) in [
+        ("splitting,-,-,-,", 2),
+        ("splitting,-,-,kahan-li-6,", 2),
+        ("kinetic-kick,-,-,blanes-moan-6,", 2),
+        ("exact,-,-,-,0.2,1,", 1),
+    ] {
+        assert_eq!(
+            rows.iter().filter(|r| r.starts_with(prefix)).count(),
+            n,
+            "{prefix}: {text}"
+        );
+    }
     for name in ["triple-jump-4", "kahan-li-6", "kahan-li-8"] {
         let n = rows
             .iter()
@@ -358,7 +371,7 @@ fn trade_writes_a_work_precision_table_and_plot() {
         .unwrap()
         .starts_with("<svg"));
     assert!(
-        stdout(&o).contains("reference: kahan-li-8 ∘ lie-poisson"),
+        stdout(&o).contains("reference: exact: one step to T = 0.2"),
         "{}",
         stdout(&o)
     );
@@ -826,6 +839,173 @@ fn unknown_composition_is_refused_listing_the_known_ones() {
         "compose-unknown",
         &bad,
         &["integrator.composition", "yoshida-12", "kahan-li-8"],
+    );
+}
+
+// ---------------------------------------------------------------------------------------------
+// Splittings and the exact flow
+// ---------------------------------------------------------------------------------------------
+
+/// `scene` (an example file) with its `[integrator]` method replaced by `method` (no τ, θ).
+fn with_method(file: &str, method: &str, extra: &str) -> String {
+    let text = std::fs::read_to_string(scenes_dir().join(file)).unwrap();
+    let mut out = String::new();
+    for line in text.lines() {
+        let key = line.split('=').next().unwrap_or("").trim();
+        match key {
+            "method" => out.push_str(&format!("method = \"{method}\"\n{extra}\n")),
+            "tau" | "theta" | "composition" => {}
+            _ => {
+                out.push_str(line);
+                out.push('\n');
+            }
+        }
+    }
+    out
+}
+
+/// `method = "splitting"` on every system that has one (free body, heavy top, SE(3) satellite,
+/// SE(2) body), and its composition: the run completes, the Casimir (where monitored) is kept to
+/// round-off, g stays on its group, and the energy error is that of a second-order method at the
+/// scene's step (≤ 1e-3 over T = 1).
+#[test]
+fn splitting_runs_on_every_system_with_a_splitting() {
+    for (file, side, rot, casimir) in [
+        ("free-rigid-body.toml", 3, 3, true),
+        ("heavy-top.toml", 3, 3, false),
+        ("rigid-body-se3.toml", 4, 3, false),
+        ("planar-body-se2.toml", 3, 2, false),
+    ] {
+        for extra in ["", "composition = \"triple-jump-4\""] {
+            let text = with_method(file, "splitting", extra)
+                .replace("[integrator]", "[integrator]\nduration = 1.0");
+            let text = strip_key(&text, "duration", 1);
+            let (c, summary) = run_text(&format!("split-{file}"), &text);
+            assert!(summary.contains("splitting"), "{summary}");
+            let t = c.col("t");
+            assert!((t[t.len() - 1] - 1.0).abs() < 1e-12, "{file}");
+            if casimir {
+                assert!(c.max_relative_drift("casimir") < 1e-13, "{file}");
+            }
+            assert!(
+                c.max_relative_drift("energy") < 1e-3,
+                "{file} {extra}: {}",
+                c.max_relative_drift("energy")
+            );
+            assert!(c.max_orthogonality_defect(side, rot) < 1e-13, "{file}");
+        }
+    }
+}
+
+/// Removes every `key = …` line after the first `keep` ones.
+fn strip_key(text: &str, key: &str, keep: usize) -> String {
+    let mut seen = 0;
+    let mut out = String::new();
+    for line in text.lines() {
+        if line.split('=').next().unwrap_or("").trim() == key {
+            seen += 1;
+            if seen > keep {
+                continue;
+            }
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
+}
+
+/// The exact flow on the free body agrees with kinetic-kick (no potential: the same flow) and
+/// with a fine Lie–Poisson run; energy and Casimir at round-off.
+#[test]
+fn exact_and_kinetic_kick_run_on_the_free_body() {
+    let exact = with_method("free-rigid-body.toml", "exact", "");
+    let kick = with_method(
+        "free-rigid-body.toml",
+        "kinetic-kick",
+        "splitting = \"blanes-moan-4\"",
+    );
+    let (a, summary) = run_text("exact-frb", &exact);
+    assert!(summary.contains("exact"), "{summary}");
+    let (b, summary) = run_text("kick-frb", &kick);
+    assert!(summary.contains("blanes-moan-4 (order 4"), "{summary}");
+    assert!(a.max_relative_drift("energy") < 1e-13 && a.max_relative_drift("casimir") < 1e-13);
+    let (la, lb) = (&a.rows[a.rows.len() - 1], &b.rows[b.rows.len() - 1]);
+    for (x, y) in la.iter().zip(lb) {
+        assert!((x - y).abs() < 1e-12, "{la:?} vs {lb:?}");
+    }
+}
+
+/// The kinetic–kick splittings on the heavy top, orders 2, 4, 6: the higher orders land closer to
+/// one another than Strang does to them.
+#[test]
+fn kinetic_kick_runs_on_the_heavy_top_with_every_scheme() {
+    let mut last = vec![];
+    for scheme in ["strang", "blanes-moan-4", "blanes-moan-6"] {
+        let text = with_method(
+            "heavy-top.toml",
+            "kinetic-kick",
+            &format!("splitting = \"{scheme}\""),
+        )
+        .replace("step = 0.001", "step = 0.01")
+        .replace("duration = 5.0", "duration = 1.0");
+        let (c, summary) = run_text(&format!("kick-top-{scheme}"), &text);
+        assert!(summary.contains(scheme), "{summary}");
+        assert!(c.max_relative_drift("energy") < 1e-4, "{scheme}");
+        last.push(c.rows[c.rows.len() - 1].clone());
+    }
+    let d = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+    };
+    assert!(
+        d(&last[1], &last[2]) < 0.1 * d(&last[0], &last[2]),
+        "{last:?}"
+    );
+}
+
+#[test]
+fn exact_flow_off_the_free_body_is_refused_naming_why() {
+    let text = with_method("heavy-top.toml", "exact", "");
+    assert_rejected(
+        "exact-top",
+        &text,
+        &["integrator.method", "exact", "free rigid body"],
+    );
+}
+
+#[test]
+fn kinetic_kick_off_so3_is_refused_naming_why() {
+    let text = with_method("planar-body-se2.toml", "kinetic-kick", "");
+    assert_rejected("kick-se2", &text, &["kinetic-kick", "SO(3)"]);
+}
+
+#[test]
+fn splitting_of_the_so_n_geodesic_is_refused_naming_why() {
+    let text = with_method("geodesic-so-n.toml", "splitting", "");
+    assert_rejected(
+        "split-son",
+        &text,
+        &["splitting", "SO(n)", "no such splitting"],
+    );
+}
+
+#[test]
+fn splitting_with_a_tau_or_coefficients_on_another_method_is_refused() {
+    let bad = GOOD
+        .replace("\"lie-poisson\"", "\"splitting\"")
+        .replace("theta = 0.5\n", "");
+    assert_rejected("split-tau", &bad, &["integrator.tau", "splitting"]);
+    let bad = GOOD.replace(
+        "[integrator]",
+        "[integrator]\nsplitting = \"blanes-moan-4\"",
+    );
+    assert_rejected("split-lp", &bad, &["integrator.splitting", "kinetic-kick"]);
+    let bad = with_method("heavy-top.toml", "kinetic-kick", "splitting = \"yoshida\"");
+    assert_rejected(
+        "kick-unknown",
+        &bad,
+        &["integrator.splitting", "yoshida", "blanes-moan-6"],
     );
 }
 
