@@ -1,7 +1,9 @@
 //! Work-precision table of every integrator on the free rigid body 𝕀 = diag(1, 2, 3).
 //!
 //! For each method (Lie–Poisson and Euler–Poincaré × τ ∈ {exp, Cayley} × θ ∈ {0, ½, 1}, the
-//! explicit RK4 quaternion baseline and RKMK4) and each step h of a ladder, it measures
+//! explicit splitting (Strang over the principal axes) and its compositions to order 4 and 6,
+//! the exact flow (Jacobi elliptic functions; also in one step to T), the explicit RK4
+//! quaternion baseline and RKMK4) and each step h of a ladder, it measures
 //!
 //! - the global error at T = 10, `max(‖R − R_ref‖_max, ‖Π − Π_ref‖_max / |Π₀|)`, against a
 //!   reference computed independently of the crate: classical RK4 on (R as a 3×3 matrix, Π) at
@@ -15,8 +17,12 @@
 //! `docs/work-precision.csv`. Run: `cargo run --release --example work_precision` (a few minutes).
 
 use lie_integrators::integrators::baselines::{QuaternionRk4, Rkmk4};
+use lie_integrators::integrators::exact::ExactFreeBody;
+use lie_integrators::integrators::splitting::Splitting;
 use lie_integrators::integrators::systems::RigidBody;
-use lie_integrators::integrators::{EulerPoincare, Integrator, LiePoisson};
+use lie_integrators::integrators::{
+    Composition, CompositionScheme, EulerPoincare, Integrator, LiePoisson,
+};
 use lie_integrators::lie_groups::{Cayley, ExpMap, LieGroup, So3, Tau};
 use nalgebra::{Matrix3, Vector3};
 use std::fmt::Write as _;
@@ -56,6 +62,7 @@ fn reference_rk4(t: f64, n: usize) -> (Matrix3<f64>, Vector3<f64>) {
     (r, p)
 }
 
+#[derive(Clone)]
 struct Row {
     method: String,
     h: f64,
@@ -133,7 +140,16 @@ fn ladder<I: Integrator<Group = So3>>(
     reference: &(Matrix3<f64>, Vector3<f64>),
     make: impl Fn() -> I,
 ) {
-    for h in STEPS {
+    ladder_of(rows, reference, make, &STEPS);
+}
+
+fn ladder_of<I: Integrator<Group = So3>>(
+    rows: &mut Vec<Row>,
+    reference: &(Matrix3<f64>, Vector3<f64>),
+    make: impl Fn() -> I,
+    steps: &[f64],
+) {
+    for &h in steps {
         let row = measure(&make, h, reference);
         print_row(&row);
         rows.push(row);
@@ -208,46 +224,78 @@ fn main() {
     });
     geometric::<Cayley>(&mut rows, &body, &reference);
     geometric::<ExpMap>(&mut rows, &body, &reference);
+    let strang = || Splitting::new(body.clone(), pi0(), Some(r0())).unwrap();
+    ladder(&mut rows, &reference, strang);
+    for scheme in [
+        CompositionScheme::triple_jump(4).unwrap(),
+        CompositionScheme::kahan_li_6(),
+    ] {
+        ladder(&mut rows, &reference, || {
+            Composition::new(strang(), scheme.clone()).unwrap()
+        });
+    }
+    // The exact flow: its error does not depend on h, so it also runs in one step to T.
+    let mut exact_steps = vec![T_ERROR];
+    exact_steps.extend(STEPS);
+    ladder_of(
+        &mut rows,
+        &reference,
+        || ExactFreeBody::new(body.clone(), pi0(), Some(r0())).unwrap(),
+        &exact_steps,
+    );
 
-    // Summary: the cheapest (cost = ns/step × steps over T) row meeting each target.
-    println!("\ncheapest run reaching each error at T = 10 (cost = ns/step × 10/h):");
-    for target in [1e-2, 1e-4, 1e-6, 1e-8, 1e-10] {
-        let best = rows
-            .iter()
-            .filter(|r| r.error_t10 <= target)
+    // Summary: the cheapest (cost = ns/step × steps over T) row meeting each target, among the
+    // baselines (rk4, rkmk4) and among the geometric methods, and their ratio.
+    let baseline = |r: &&Row| r.method.starts_with("rk");
+    let cheapest = |rows: &[Row], ok: &dyn Fn(&Row) -> bool, base: bool| -> Option<Row> {
+        rows.iter()
+            .filter(|r| ok(r) && baseline(r) == base)
             .min_by(|a, b| {
                 (a.ns_per_step / a.h)
                     .partial_cmp(&(b.ns_per_step / b.h))
                     .unwrap()
-            });
-        if let Some(r) = best {
+            })
+            .cloned()
+    };
+    let summary = |title: &str, targets: &[f64], ok: &dyn Fn(&Row, f64) -> bool, t: f64| {
+        println!("\n{title}");
+        for &target in targets {
+            let b = cheapest(&rows, &|r| ok(r, target), true);
+            let g = cheapest(&rows, &|r| ok(r, target), false);
+            let cost = |r: &Row| r.ns_per_step * (t / r.h).ceil().max(1.0) * 1e-3;
+            let show = |r: &Option<Row>| match r {
+                Some(r) => format!("{} h = {} ({:.1} µs)", r.method, r.h, cost(r)),
+                None => "none of the ladder".into(),
+            };
+            let ratio = match (&b, &g) {
+                (Some(b), Some(g)) => format!("{:.2}", cost(g) / cost(b)),
+                _ => "—".into(),
+            };
             println!(
-                "  ≤ {target:.0e}: {} h = {} ({:.1} µs)",
-                r.method,
-                r.h,
-                r.ns_per_step * T_ERROR / r.h * 1e-3
+                "  ≤ {target:.0e}: baseline {}; geometric {}; geometric/baseline {ratio}",
+                show(&b),
+                show(&g)
             );
         }
-    }
-    println!("\ncheapest run keeping the energy error over T = 1e5 below each target:");
-    for target in [1e-2, 1e-3, 1e-4, 1e-5] {
-        let best = rows
-            .iter()
-            .filter(|r| r.energy_t1e5.is_some_and(|e| e <= target))
-            .min_by(|a, b| {
-                (a.ns_per_step / a.h)
-                    .partial_cmp(&(b.ns_per_step / b.h))
-                    .unwrap()
-            });
-        if let Some(r) = best {
-            println!(
-                "  ≤ {target:.0e}: {} h = {} ({:.2} s per 1e5 time units)",
-                r.method,
-                r.h,
-                r.ns_per_step * T_LONG / r.h * 1e-9
-            );
-        }
-    }
+    };
+    summary(
+        "cheapest run reaching each error at T = 10 (cost = ns/step × 10/h):",
+        &[1e-2, 1e-4, 1e-6, 1e-8, 1e-10],
+        &|r, target| r.error_t10 <= target,
+        T_ERROR,
+    );
+    summary(
+        "cheapest run keeping the energy error over T = 1e3 below each target (cost of T = 1e3):",
+        &[1e-3, 1e-5, 1e-7, 1e-9],
+        &|r, target| r.energy_t1e3 <= target,
+        T_ENERGY,
+    );
+    summary(
+        "cheapest run keeping the energy error over T = 1e5 below each target (cost of T = 1e5):",
+        &[1e-2, 1e-3, 1e-4, 1e-5],
+        &|r, target| r.energy_t1e5.is_some_and(|e| e <= target),
+        T_LONG,
+    );
 
     let mut csv = String::from(
         "method,h,error_t10,ns_per_step,max_rel_energy_error_t1e3,max_rel_casimir_error_t1e3,\

@@ -864,6 +864,37 @@ fn with_method(file: &str, method: &str, extra: &str) -> String {
     out
 }
 
+/// Every scene file in examples/scenes runs (a short horizon) — the documented examples stay true.
+#[test]
+fn every_example_scene_runs() {
+    let mut seen = 0;
+    for e in std::fs::read_dir(scenes_dir()).unwrap() {
+        let path = e.unwrap().path();
+        if path.extension().and_then(|x| x.to_str()) != Some("toml") {
+            continue;
+        }
+        let dir = temp_dir(&format!(
+            "every-{}",
+            path.file_stem().unwrap().to_str().unwrap()
+        ));
+        let o = lie_sim(
+            &[
+                "run",
+                path.to_str().unwrap(),
+                "--out",
+                "t.csv",
+                "--duration",
+                "0.05",
+            ],
+            &dir,
+        );
+        assert!(o.status.success(), "{}: {}", path.display(), stderr(&o));
+        std::fs::remove_dir_all(&dir).unwrap();
+        seen += 1;
+    }
+    assert!(seen >= 8, "{seen} scenes");
+}
+
 /// `method = "splitting"` on every system that has one (free body, heavy top, SE(3) satellite,
 /// SE(2) body), and its composition: the run completes, the Casimir (where monitored) is kept to
 /// round-off, g stays on its group, and the energy error is that of a second-order method at the
