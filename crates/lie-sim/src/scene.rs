@@ -50,8 +50,8 @@
 //!   potential's kick; order 2, symmetric (so `composition` applies), Casimirs to round-off. Every
 //!   system but `geodesic-so-n` has one.
 //! - `kinetic-kick`: the exact free-body flow (Jacobi elliptic functions) between kicks of the
-//!   potential, with the coefficients `splitting` (order 2, 4, 6): `heavy-top` and
-//!   `free-rigid-body`. The kinetic flow is exact, so a fast spin costs no accuracy.
+//!   potential, with the coefficients `splitting` (order 2, 4, 6): `heavy-top`, `free-rigid-body`
+//!   and `rigid-body-se3` (the satellite; free, it is the exact motion). The kinetic flow is exact, so a fast spin costs no accuracy.
 //! - `exact`: the exact free rigid body flow, any step, cost independent of the step
 //!   (`free-rigid-body` only).
 //!
@@ -976,11 +976,14 @@ pub fn inapplicable(method: Method, system: &System) -> Option<String> {
                 .into(),
         ),
         Method::KineticKick
-            if !matches!(system, System::FreeRigidBody(_) | System::HeavyTop(_)) =>
+            if !matches!(
+                system,
+                System::FreeRigidBody(_) | System::HeavyTop(_) | System::RigidBodySe3(_)
+            ) =>
         {
             Some(
                 "kinetic-kick needs the exact flow of the kinetic energy, known here for the \
-                 rigid body on SO(3) only (free-rigid-body, heavy-top); use splitting"
+                 rigid body (free-rigid-body, heavy-top, rigid-body-se3) only; use splitting"
                     .into(),
             )
         }

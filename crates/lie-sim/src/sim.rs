@@ -11,8 +11,8 @@ use crate::scene::{
     inapplicable, GeodesicSoN, Method, MethodSpec, SolverChoice, SolverOptions, System, TauKind,
 };
 use faer::{Col, Mat};
-use integrators::exact::{ExactFreeBody, FreeBodyFlow};
-use integrators::splitting::{KineticKick, SplitSystem, Splitting, SplittingScheme};
+use integrators::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
+use integrators::splitting::{KineticFlow, KineticKick, SplitSystem, Splitting, SplittingScheme};
 use integrators::systems::{
     GeneralizedRigidBody, HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, RigidBody,
     RigidBodySe3 as RigidBodySe3System,
@@ -193,15 +193,18 @@ pub fn dispatch<J: Job>(
                 let sat =
                     RigidBodySe3System::satellite(p.mass, p.inertia, p.gravitational_parameter)
                         .map_err(built)?;
-                job.run(sat, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g))
+                job.run(sat, p.momentum, g0, |s, mu, g| b.make_se3(s, mu, g))
                     .map_err(built)
             } else {
                 let free = WithCasimir::<Se3, _> {
                     inner: RigidBodySe3System::free(p.mass, p.inertia).map_err(built)?,
                     casimir: |mu: &Vector6<f64>| mu.fixed_rows::<3>(3).norm_squared(),
                 };
-                job.run(free, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g))
-                    .map_err(built)
+                job.run(free, p.momentum, g0, |s, mu, g| {
+                    let flow = FreeBodySe3Flow::new(&s.inner);
+                    b.make_kinetic_or_split(s, flow, mu, g)
+                })
+                .map_err(built)
             }
         }
         System::PlanarBodySe2(p) => {
@@ -380,24 +383,42 @@ impl Builder {
         }
     }
 
-    /// The kinetic–kick splitting with the exact free-body flow of `body`.
-    fn kinetic_kick<S>(
+    /// The satellite (or free body) on SE(3): every method, the kinetic–kick with the exact
+    /// free-body flow on SE(3) included.
+    fn make_se3(
+        &self,
+        system: RigidBodySe3System,
+        mu0: Vector6<f64>,
+        g0: Option<Se3>,
+    ) -> Result<Boxed<Se3>, IntegratorError> {
+        let flow = FreeBodySe3Flow::new(&system);
+        self.make_kinetic_or_split(system, flow, mu0, g0)
+    }
+
+    /// `kinetic-kick` with the kinetic flow `flow`, or any other method of [`Builder::make_split`].
+    fn make_kinetic_or_split<G, S, K>(
         &self,
         system: S,
-        body: &RigidBody,
-        mu0: Vector3<f64>,
-        g0: Option<So3>,
-    ) -> Result<Boxed<So3>, IntegratorError>
+        flow: K,
+        mu0: G::Algebra,
+        g0: Option<G>,
+    ) -> Result<Boxed<G>, IntegratorError>
     where
-        S: integrators::System<So3> + 'static,
+        G: CayleyGroup + 'static,
+        S: SplitSystem<G> + 'static,
+        K: KineticFlow<G> + 'static,
     {
-        let scheme = self
-            .method
-            .splitting
-            .clone()
-            .unwrap_or_else(SplittingScheme::strang);
-        let flow = FreeBodyFlow::new(body);
-        Ok(Boxed::new(KineticKick::new(system, flow, scheme, mu0, g0)?))
+        match self.method.method {
+            Method::KineticKick => {
+                let scheme = self
+                    .method
+                    .splitting
+                    .clone()
+                    .unwrap_or_else(SplittingScheme::strang);
+                Ok(Boxed::new(KineticKick::new(system, flow, scheme, mu0, g0)?))
+            }
+            _ => self.make_split(system, mu0, g0),
+        }
     }
 
     /// The free rigid body: every method, the exact flow and the kinetic–kick included.
@@ -409,7 +430,10 @@ impl Builder {
     ) -> Result<Boxed<So3>, IntegratorError> {
         match self.method.method {
             Method::Exact => Ok(Boxed::new(ExactFreeBody::new(body, mu0, g0)?)),
-            Method::KineticKick => self.kinetic_kick(body.clone(), &body, mu0, g0),
+            Method::KineticKick => {
+                let flow = FreeBodyFlow::new(&body);
+                self.make_kinetic_or_split(body, flow, mu0, g0)
+            }
             _ => self.make_so3(body, mu0, g0),
         }
     }
@@ -423,8 +447,8 @@ impl Builder {
     ) -> Result<Boxed<So3>, IntegratorError> {
         match self.method.method {
             Method::KineticKick => {
-                let body = top.body().clone();
-                self.kinetic_kick(top, &body, mu0, g0)
+                let flow = FreeBodyFlow::new(top.body());
+                self.make_kinetic_or_split(top, flow, mu0, g0)
             }
             _ => self.make_so3(top, mu0, g0),
         }

@@ -1,5 +1,5 @@
 //! Exact flows: the free rigid body in closed form ([`FreeBodyFlow`], with the elliptic functions
-//! of [`elliptic`]) and the integrator that steps with it ([`ExactFreeBody`]).
+//! of [`elliptic`]; on SE(3), [`FreeBodySe3Flow`]) and the integrator that steps with it ([`ExactFreeBody`]).
 //!
 //! The exact flow is a method of its own (no truncation error, cost independent of the step), the
 //! kinetic part of the splittings [`crate::splitting::KineticKick`] for forced bodies (heavy top,
@@ -8,6 +8,8 @@
 pub mod elliptic;
 mod exact_free_body;
 mod free_body_flow;
+mod free_body_se3_flow;
 
 pub use exact_free_body::ExactFreeBody;
 pub use free_body_flow::FreeBodyFlow;
+pub use free_body_se3_flow::FreeBodySe3Flow;

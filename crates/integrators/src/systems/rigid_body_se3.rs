@@ -105,6 +105,10 @@ impl RigidBodySe3 {
     pub fn mass(&self) -> f64 {
         self.mass
     }
+    /// The rotational part: the rigid body of inertia 𝕀 about the centre of mass.
+    pub fn body(&self) -> &RigidBody {
+        &self.body
+    }
     /// The inertia tensor 𝕀 about the centre of mass.
     pub fn inertia(&self) -> &Matrix3<f64> {
         self.body.inertia()
