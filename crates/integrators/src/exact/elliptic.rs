@@ -6,9 +6,8 @@
 //!   13–26; DLMF §19.36(i). The iteration stops when the arguments agree to 2·10⁻³ relative, where
 //!   the truncated series (through degree 5) leaves an error below 10⁻¹⁶.
 //! - Legendre's F(φ, k) and Π(n; φ, k) from them (DLMF 19.25.5, 19.25.14), K(k) by the AGM.
-//! - The amplitude am(u, k) (so sn, cn, dn) by the descending Landen / AGM scheme of Abramowitz &
-//!   Stegun 16.4 (DLMF 22.20(ii)), with `c_{n+1} = c_n²/(4a_{n+1})` to avoid the cancellation of
-//!   `(a_n − b_n)/2`.
+//! - sn, cn, dn by the descending Landen / AGM transformation and Bulirsch's ascending
+//!   recurrence (DLMF 22.20(ii); Bulirsch 1965).
 //!
 //! The modulus is passed as k² and the complementary k'² = 1 − k² separately, so that callers
 //! near k = 1 (the separatrix of the rigid body) keep k'² to full relative accuracy. Checked
@@ -115,49 +114,72 @@ pub fn complete_k(kc2: f64) -> f64 {
     FRAC_PI_2 / a
 }
 
-/// The amplitude φ = am(u, k) for |u| ≤ K(k) (so |φ| ≤ π/2), from k² and k'² (A&S 16.4.3).
-/// For k' = 0 (k = 1), am u = gd u = atan(sinh u).
-pub fn amplitude(u: f64, k2: f64, kc2: f64) -> f64 {
+/// Jacobi's (sn u, cn u, dn u) for modulus k, from k'² ∈ [0, 1] (so that k near 1 keeps its full
+/// relative accuracy), by the descending Landen/AGM transformation and Bulirsch's ascending
+/// recurrence (R. Bulirsch, "Numerical calculation of elliptic integrals and elliptic functions",
+/// Numer. Math. 7 (1965) 78–90; the `sncndn` of Numerical Recipes §6.12): one `sin_cos` and a
+/// few divisions, no inverse trigonometric function. k' = 0 (k = 1): (tanh u, sech u, sech u).
+pub fn sn_cn_dn(u: f64, kc2: f64) -> (f64, f64, f64) {
     if kc2 == 0.0 {
-        return u.sinh().atan();
+        let sech = 1.0 / u.cosh();
+        return (u.tanh(), sech, sech);
     }
-    if k2 == 0.0 {
-        return u;
+    // AGM(1, k') with the means kept for the ascent; it stops when a and b agree to 1e-8, where
+    // the next mean is exact to O(1e-16) (quadratic convergence).
+    let mut em = [0.0f64; 16];
+    let mut en = [0.0f64; 16];
+    let (mut a, mut emc) = (1.0f64, kc2);
+    let mut c = 1.0;
+    let mut l = 0;
+    for i in 0..16 {
+        l = i;
+        em[i] = a;
+        emc = emc.sqrt();
+        en[i] = emc;
+        c = 0.5 * (a + emc);
+        if (a - emc).abs() <= 1e-8 * a {
+            break;
+        }
+        emc *= a;
+        a = c;
     }
-    let mut a = [0.0f64; 16];
-    let mut c = [0.0f64; 16];
-    a[0] = 1.0;
-    c[0] = k2.sqrt();
-    let mut b = kc2.sqrt();
-    let mut n = 0;
-    while n + 1 < a.len() && c[n].abs() > f64::EPSILON * a[n] {
-        a[n + 1] = 0.5 * (a[n] + b);
-        c[n + 1] = c[n] * c[n] / (4.0 * a[n + 1]);
-        b = (a[n] * b).sqrt();
-        n += 1;
+    let (mut sn, mut cn) = (u * c).sin_cos();
+    let mut dn = 1.0;
+    if sn != 0.0 {
+        let mut a = cn / sn;
+        c *= a;
+        for ii in (0..=l).rev() {
+            let b = em[ii];
+            a *= c;
+            c *= dn;
+            dn = (en[ii] + a) / (b + a);
+            a = c / b;
+        }
+        let r = 1.0 / (c * c + 1.0).sqrt();
+        sn = if sn >= 0.0 { r } else { -r };
+        cn = c * sn;
     }
-    let mut phi = (1u64 << n) as f64 * a[n] * u;
-    for i in (1..=n).rev() {
-        phi = 0.5 * (phi + (c[i] / a[i] * phi.sin()).asin());
-    }
-    phi
+    (sn, cn, dn)
 }
 
-/// Legendre's F(φ, k) = ∫₀^φ dθ/√(1 − k² sin²θ) for |φ| ≤ π/2 (DLMF 19.25.5), with
-/// Δ² = 1 − k² sin²φ given: near k = 1 and φ = π/2, F moves by ∂F/∂Δ² ~ Δ⁻², so Δ² must come
-/// from k'² (Δ² = cos²φ + k'² sin²φ), never from a rounded k².
-pub fn incomplete_f(phi: f64, delta2: f64) -> f64 {
-    let (s, c) = phi.sin_cos();
+/// Legendre's F(φ, k) = ∫₀^φ dθ/√(1 − k² sin²θ) for |φ| ≤ π/2 (DLMF 19.25.5), from s = sin φ,
+/// c = cos φ ≥ 0 and Δ² = 1 − k² sin²φ: near k = 1 and φ = π/2, F moves by ∂F/∂Δ² ~ Δ⁻², so Δ²
+/// must come from k'² (Δ² = c² + k'² s²), never from a rounded k².
+pub fn incomplete_f(s: f64, c: f64, delta2: f64) -> f64 {
     s * carlson_rf(c * c, delta2, 1.0)
 }
 
 /// Legendre's Π(n; φ, k) = ∫₀^φ dθ/((1 − n sin²θ)√(1 − k² sin²θ)) for |φ| ≤ π/2 and
-/// 1 − n sin²φ > 0 (DLMF 19.25.14), with Δ² = 1 − k² sin²φ given (accurate near k = 1).
-pub fn incomplete_pi(n: f64, phi: f64, delta2: f64) -> f64 {
-    let (s, c) = phi.sin_cos();
-    let s3 = s * s * s;
-    s * carlson_rf(c * c, delta2, 1.0)
-        + n / 3.0 * s3 * carlson_rj(c * c, delta2, 1.0, 1.0 - n * s * s)
+/// 1 − n sin²φ > 0 (DLMF 19.25.14), from s, c, Δ² as for [`incomplete_f`].
+pub fn incomplete_pi(n: f64, s: f64, c: f64, delta2: f64) -> f64 {
+    incomplete_f_and_pi(n, s, c, delta2).1
+}
+
+/// (F(φ, k), Π(n; φ, k)) together, sharing R_F (Π = F + (n/3) s³ R_J).
+pub fn incomplete_f_and_pi(n: f64, s: f64, c: f64, delta2: f64) -> (f64, f64) {
+    let f = s * carlson_rf(c * c, delta2, 1.0);
+    let p = f + n / 3.0 * s * s * s * carlson_rj(c * c, delta2, 1.0, 1.0 - n * s * s);
+    (f, p)
 }
 
 /// The complete Π(n, k) = Π(n; π/2, k), from k'².

@@ -1,6 +1,8 @@
 //! The exact flow of the free rigid body, Π(t) and R(t), with Jacobi elliptic functions.
 
-use super::elliptic::{amplitude, complete_k, complete_pi, incomplete_f, incomplete_pi};
+use super::elliptic::{
+    complete_k, complete_pi, incomplete_f, incomplete_f_and_pi, incomplete_pi, sn_cn_dn,
+};
 use crate::splitting::{AxisymmetricFlow, KineticFlow};
 use crate::systems::RigidBody;
 use crate::IntegratorError;
@@ -116,9 +118,16 @@ impl FreeBodyFlow {
         let p = self.axes.tr_mul(pi) / m;
         let i = self.moments;
         // Sort the axes by moment; D₂ = |Π|² − 2hI_mid (|Π| = 1) decides the circulation axis.
-        let mut idx = [0usize, 1, 2];
-        idx.sort_by(|&a, &b| i[a].total_cmp(&i[b]));
-        let [lo, mid, hi] = idx;
+        let (mut lo, mut mid, mut hi) = (0usize, 1usize, 2usize);
+        if i[lo] > i[mid] {
+            (lo, mid) = (mid, lo);
+        }
+        if i[mid] > i[hi] {
+            (mid, hi) = (hi, mid);
+        }
+        if i[lo] > i[mid] {
+            (lo, mid) = (mid, lo);
+        }
         let d2 =
             p[lo] * p[lo] * (i[lo] - i[mid]) / i[lo] + p[hi] * p[hi] * (i[hi] - i[mid]) / i[hi];
         let (c1, c3) = if d2 >= 0.0 { (lo, hi) } else { (hi, lo) };
@@ -146,27 +155,42 @@ impl FreeBodyFlow {
         let d3 = q[0] * q[0] * (i3 - i1) / i1 + q[1] * q[1] * (i3 - i2) / i2;
         let d1 = q[1] * q[1] * (i2 - i1) / i2 + q[2] * q[2] * (i3 - i1) / i3;
         let d2 = q[0] * q[0] * (i1 - i2) / i1 + q[2] * q[2] * (i3 - i2) / i3;
-        let mut kc2 = ((i3 - i1) * d2 / ((i3 - i2) * d1)).max(0.0);
-        let mut k2 = ((i2 - i1) * d3 / ((i3 - i2) * d1)).max(0.0);
-        if kc2 < k2 {
-            k2 = 1.0 - kc2;
-        } else {
-            kc2 = 1.0 - k2;
-        }
+        // k'² (all the elliptic functions need): from D₂ when it is the smaller of k², k'² (full
+        // relative accuracy near the separatrix), else as 1 − k².
+        let kc2 = ((i3 - i1) * d2 / ((i3 - i2) * d1)).max(0.0);
+        let k2 = ((i2 - i1) * d3 / ((i3 - i2) * d1)).max(0.0);
+        let kc2 = if kc2 < k2 { kc2 } else { 1.0 - k2 };
         let a1 = (d3 * i1 / (i3 - i1)).sqrt();
         let a2 = (d3 * i2 / (i3 - i2)).sqrt();
         let a3 = (d1 * i3 / (i3 - i1)).sqrt();
         let lambda = ((i3 - i2) * d1 / (i1 * i2 * i3)).sqrt();
         let sigma = (i3 - i2).signum();
         let kk = complete_k(kc2);
-        // Initial phase u₀ = F(φ₀) with φ₀ = am u₀ = atan2(sn, cn), reduced to |φ| ≤ π/2.
-        let phi0 = (sigma * q[1] / a2).atan2(q[0] / a1);
-        let j0 = (phi0 / PI).round();
-        let phi0r = phi0 - j0 * PI;
-        // Δ²(φ₀) = dn² u₀ = cos²φ₀ + k'² sin²φ₀ (from k'², see `incomplete_f`).
-        let (s0, c0) = phi0r.sin_cos();
+        let beta = i3 * (i2 - i1) / (i1 * (i3 - i2));
+        // φ₀ = am u₀ from (sn u₀, cn u₀) = (σq₂/A₂, q₁/A₁), reduced to |φ₀| ≤ π/2 (cn ≥ 0) by
+        // am(u + 2Kj) = am u + jπ, under which sn and cn change sign.
+        let (sr, cr) = (sigma * q[1] / a2, q[0] / a1);
+        let norm = sr.hypot(cr);
+        let (mut s0, mut c0) = (sr / norm, cr / norm);
+        let j0: f64 = if c0 >= 0.0 {
+            0.0
+        } else if s0 >= 0.0 {
+            1.0
+        } else {
+            -1.0
+        };
+        if j0 != 0.0 {
+            (s0, c0) = (-s0, -c0);
+        }
+        // Δ²(φ₀) = dn² u₀ = cos²φ₀ + k'² sin²φ₀ (from k'², see `incomplete_f`); Π(−β; φ₀) only
+        // when R is advanced.
         let delta0 = c0 * c0 + kc2 * s0 * s0;
-        let u0 = if j0 == 0.0 { 0.0 } else { 2.0 * kk * j0 } + incomplete_f(phi0r, delta0);
+        let (f0, pi0) = if r.is_some() {
+            incomplete_f_and_pi(-beta, s0, c0, delta0)
+        } else {
+            (incomplete_f(s0, c0, delta0), 0.0)
+        };
+        let u0 = if j0 == 0.0 { 0.0 } else { 2.0 * kk * j0 } + f0;
         let u = u0 + lambda * tau;
         let j = if kk.is_finite() {
             (u / (2.0 * kk)).round()
@@ -174,10 +198,10 @@ impl FreeBodyFlow {
             0.0
         };
         let ur = if j == 0.0 { u } else { u - 2.0 * kk * j };
-        let phir = amplitude(ur, k2, kc2);
         let parity = if j % 2.0 == 0.0 { 1.0 } else { -1.0 };
-        let (sn, cn) = phir.sin_cos();
-        let dn = (kc2 + k2 * cn * cn).sqrt();
+        let (sn, cn, _) = sn_cn_dn(ur, kc2);
+        // dn² = cn² + k'² sn², consistent with (sn, cn): |q(t)| = 1 to rounding, unbiased.
+        let dn = (cn * cn + kc2 * sn * sn).sqrt();
         let qt = Vector3::new(a1 * cn * parity, sigma * a2 * sn * parity, a3 * dn);
         let pi_t = pmat * qt * m;
         if !pi_t.iter().all(|x| x.is_finite()) {
@@ -189,21 +213,16 @@ impl FreeBodyFlow {
             return Ok((pi_t, None));
         };
         // Δψ from the third-kind integral, each term reduced by its value over π.
-        let beta = i3 * (i2 - i1) / (i1 * (i3 - i2));
         let sb = (1.0 + beta).sqrt();
-        let g_of = |phi: f64| (sb * phi.sin()).atan2(phi.cos()) / sb;
-        let pi_of = |phi: f64| {
-            let (s, c) = phi.sin_cos();
-            incomplete_pi(-beta, phi, c * c + kc2 * s * s)
-        };
+        let g_of = |s: f64, c: f64| (sb * s).atan2(c) / sb;
         let dj = j - j0;
         let whole_pi = if dj == 0.0 {
             0.0
         } else {
             2.0 * dj * complete_pi(-beta, kc2)
         };
-        let d_pi = whole_pi + pi_of(phir) - pi_of(phi0r);
-        let d_g = dj * PI / sb + g_of(phir) - g_of(phi0r);
+        let d_pi = whole_pi + incomplete_pi(-beta, sn, cn, cn * cn + kc2 * sn * sn) - pi0;
+        let d_g = dj * PI / sb + g_of(sn, cn) - g_of(s0, c0);
         let dpsi = tau / i3 + (i3 - i1) / (i1 * i3 * lambda) * (d_pi - a3 * d_g);
         let b0 = minimal_rotation(&q);
         let bt = minimal_rotation(&qt);
