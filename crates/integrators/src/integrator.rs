@@ -64,6 +64,32 @@ impl MethodInfo {
     }
 }
 
+/// `order 4, symmetric, explicit; keeps poisson, casimirs, on-group` (`order exact` for an exact
+/// flow; `keeps nothing` when nothing is kept).
+impl core::fmt::Display for MethodInfo {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        if self.order == Self::EXACT {
+            f.write_str("order exact")?;
+        } else {
+            write!(f, "order {}", self.order)?;
+        }
+        if self.symmetric {
+            f.write_str(", symmetric")?;
+        }
+        f.write_str(if self.explicit {
+            ", explicit"
+        } else {
+            ", implicit"
+        })?;
+        let kept = self.preserved();
+        if kept.is_empty() {
+            f.write_str("; keeps nothing")
+        } else {
+            write!(f, "; keeps {}", kept.join(", "))
+        }
+    }
+}
+
 /// A one-step method advancing the state (t, μ, optional g) of a mechanical system on G.
 ///
 /// `step(h)` either advances the state by h or returns an error and leaves it exactly as it was.
@@ -104,4 +130,37 @@ pub fn integrate<I: Integrator>(
         observe(integrator);
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::MethodInfo;
+
+    #[test]
+    fn method_info_reads_as_a_sentence() {
+        assert_eq!(
+            MethodInfo::plain(4).to_string(),
+            "order 4, explicit; keeps on-group"
+        );
+        let exact = MethodInfo {
+            order: MethodInfo::EXACT,
+            symmetric: true,
+            explicit: true,
+            poisson: true,
+            casimirs: true,
+            momentum_map: true,
+            energy: true,
+            on_group: true,
+        };
+        assert_eq!(
+            exact.to_string(),
+            "order exact, symmetric, explicit; keeps poisson, casimirs, momentum-map, energy, on-group"
+        );
+        let none = MethodInfo {
+            explicit: false,
+            on_group: false,
+            ..MethodInfo::plain(1)
+        };
+        assert_eq!(none.to_string(), "order 1, implicit; keeps nothing");
+    }
 }

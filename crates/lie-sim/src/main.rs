@@ -229,6 +229,7 @@ fn cmd_run(
             c.stages()
         );
     }
+    say!("  properties   {}", summary.info);
     if let Some(s) = &m.splitting {
         say!(
             "  splitting    {} (order {}: exact kinetic flows between potential kicks)",

@@ -31,6 +31,8 @@ pub struct RunSummary {
     pub max_casimir_error: Option<f64>,
     /// Where the CSV went.
     pub out: PathBuf,
+    /// What the method is and keeps, as it describes itself.
+    pub info: integrators::MethodInfo,
 }
 
 /// |x − x₀| / |x₀|, or |x − x₀| when x₀ = 0.
@@ -173,6 +175,7 @@ pub fn run_simulation(
         max_energy_error: max_e,
         max_casimir_error: max_c,
         out: out.to_path_buf(),
+        info: sim.info(),
     })
 }
 

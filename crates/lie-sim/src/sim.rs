@@ -47,6 +47,8 @@ pub trait Simulation {
     fn energy(&self) -> f64;
     /// The Casimir the system monitors (|Π|² for the free rigid body), if it has one.
     fn casimir(&self) -> Option<f64>;
+    /// What the method is and keeps, as it describes itself (`integrators::MethodInfo`).
+    fn info(&self) -> integrators::MethodInfo;
 }
 
 /// Builds the simulation a scene names: its system with its initial state, advanced by `method`.
@@ -655,6 +657,9 @@ impl<I: Integrator> Simulation for Adapter<I> {
     fn casimir(&self) -> Option<f64> {
         self.0.casimir()
     }
+    fn info(&self) -> integrators::MethodInfo {
+        self.0.info()
+    }
 }
 
 #[cfg(test)]
@@ -700,6 +705,19 @@ pub(crate) mod mock {
         }
         fn casimir(&self) -> Option<f64> {
             Some(9.0 * self.omega * self.omega)
+        }
+        /// The exact uniform rotation.
+        fn info(&self) -> integrators::MethodInfo {
+            integrators::MethodInfo {
+                order: integrators::MethodInfo::EXACT,
+                symmetric: true,
+                explicit: true,
+                poisson: true,
+                casimirs: true,
+                momentum_map: true,
+                energy: true,
+                on_group: true,
+            }
         }
     }
 }

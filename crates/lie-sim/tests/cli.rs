@@ -183,6 +183,7 @@ fn check_scene(
         "method",
         "tau",
         "theta",
+        "properties   order",
         "wall time",
         "energy",
         "casimir",
