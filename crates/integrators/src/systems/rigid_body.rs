@@ -22,6 +22,8 @@ pub struct RigidBody {
     axes: Matrix3<f64>,
     /// The principal moments Iᵢ.
     moments: Vector3<f64>,
+    /// 1/Iᵢ (the splitting's rotation angles are products, not quotients, on its hot path).
+    inv_moments: Vector3<f64>,
     /// 𝕀 is diagonal: aᵢ = eᵢ exactly (the splitting then rotates coordinates in place).
     diagonal: bool,
 }
@@ -45,6 +47,7 @@ impl RigidBody {
             inner,
             axes,
             moments,
+            inv_moments: moments.map(|m| 1.0 / m),
             diagonal,
         })
     }
@@ -123,7 +126,7 @@ impl SplitSystem<So3> for RigidBody {
             return;
         }
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-        let (s, c) = sin_cos(t * mu[i] / self.moments[i]);
+        let (s, c) = sin_cos(t * mu[i] * self.inv_moments[i]);
         // Π ← exp(−α êᵢ) Π: Π̇ = Π × ωeᵢ turns (Πⱼ, Πₖ) by −α in their plane.
         let (pj, pk) = (mu[j], mu[k]);
         mu[j] = c * pj + s * pk;
