@@ -110,8 +110,8 @@ pub fn candidates() -> Vec<MethodSpec> {
     v
 }
 
-/// The compositions of the Strang splitting in the trade: orders 4 and 6.
-pub const SPLITTING_COMPOSITIONS: [&str; 2] = ["triple-jump-4", "kahan-li-6"];
+/// The compositions of the Strang splitting in the trade: order 4 (3 and 5 stages) and 6.
+pub const SPLITTING_COMPOSITIONS: [&str; 3] = ["triple-jump-4", "mclachlan-4", "kahan-li-6"];
 
 /// The steps a method runs in the trade: the ladder, and for the exact flow (whose error does not
 /// depend on h and whose cost per step does not depend on h either) one step to T first.
@@ -552,14 +552,14 @@ mod tests {
     #[test]
     fn candidates_cover_every_lie_method_tau_theta_the_compositions_the_splittings_and_the_baselines(
     ) {
-        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + splitting (plain, 2 compositions)
+        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + splitting (plain, 3 compositions)
         // + kinetic-kick × 3 schemes + exact + rk4 + rkmk4.
-        assert_eq!(candidates().len(), 33);
+        assert_eq!(candidates().len(), 34);
         let composed: Vec<_> = candidates()
             .into_iter()
             .filter(|m| m.composition.is_some())
             .collect();
-        assert_eq!(composed.len(), 8);
+        assert_eq!(composed.len(), 9);
         assert!(composed
             .iter()
             .all(|m| (m.method == Method::LiePoisson && m.theta == Some(0.5))
