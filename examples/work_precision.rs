@@ -33,7 +33,8 @@ const T_ERROR: f64 = 10.0;
 const T_ENERGY: f64 = 1000.0;
 const T_LONG: f64 = 1e5;
 const STEPS: [f64; 7] = [0.4, 0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625];
-const LONG_STEPS: [f64; 4] = [0.4, 0.2, 0.1, 0.05];
+/// Steps also run over T = 10⁵ (10: the exact flow in steps of the T = 10 horizon).
+const LONG_STEPS: [f64; 5] = [10.0, 0.4, 0.2, 0.1, 0.05];
 
 fn pi0() -> Vector3<f64> {
     Vector3::new(0.4, 1.0, 0.3)

@@ -331,18 +331,12 @@ fn cmd_trade(
             None => say!("  {:<52} -", m.to_string()),
         }
     }
-    if !report.inapplicable.is_empty() {
-        let mut names: Vec<&str> = report
-            .inapplicable
-            .iter()
-            .map(|m| m.method.name())
-            .collect();
-        names.dedup();
-        say!(
-            "not applicable to {}: {} (needs a purely kinetic Lagrangian)",
-            scene.system.kind(),
-            names.join(", ")
-        );
+    let mut methods: Vec<_> = report.inapplicable.iter().map(|m| m.method).collect();
+    methods.dedup();
+    for m in methods {
+        if let Some(why) = scene::inapplicable(m, &scene.system) {
+            say!("not applicable: {m}: {why}");
+        }
     }
     if !report.unavailable.is_empty() {
         let names: Vec<String> = report.unavailable.iter().map(|m| m.to_string()).collect();
