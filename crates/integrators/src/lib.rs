@@ -12,6 +12,14 @@
 //! - [`EulerArnold`]: the quadratic-Lagrangian system l(ξ) = ½⟨𝕀ξ, ξ⟩ both integrate.
 //! - [`splitting`]: explicit Poisson splittings into pieces with exact flows (Strang, with
 //!   [`Composition`] to order 10; exact kinetic flow + kicks with Blanes–Moan coefficients).
+//! - [`exact`]: the exact free rigid body flow (Jacobi elliptic functions, any step, cost
+//!   independent of T), as a method ([`exact::ExactFreeBody`]) and as the kinetic piece of the
+//!   kicks ([`exact::FreeBodyFlow`], [`exact::FreeBodySe3Flow`]).
+//! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
+//!
+//! Every integrator describes itself ([`Integrator::info`] → [`MethodInfo`]: order, symmetric,
+//! explicit, what it keeps). Which to choose, with measured costs per accuracy: `docs/choosing.md`
+//! and `docs/work-precision.md` of the repository.
 //!
 //! A system is anything implementing [`System`] (reduced Hamiltonian h(μ), its derivatives, the
 //! Legendre map, an optional potential V(g) and Casimir); [`systems`] holds concrete ones. Every
