@@ -115,6 +115,15 @@ pub enum SimError {
         /// What was wrong.
         message: String,
     },
+    /// An output path that must not be written: one of the command's inputs, another of its
+    /// outputs, a directory, a socket or block device.
+    #[error("refusing to write {path}: {why}")]
+    Output {
+        /// The output path as given.
+        path: PathBuf,
+        /// Why.
+        why: String,
+    },
     /// An output file cannot be created, written or renamed into place.
     #[error("cannot write {path}: {source}")]
     Write {

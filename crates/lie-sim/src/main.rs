@@ -204,6 +204,17 @@ fn cmd_run(
 ) -> Result<(), SimError> {
     let (scene, stem) = load(scene_path, overrides)?;
     let out = out.unwrap_or_else(|| default_path(&stem, ".csv"));
+    let outputs: Vec<&Path> = std::iter::once(out.as_path())
+        .chain(plot_path.as_deref())
+        .collect();
+    output::refuse_clobbering(&outputs, scene_path.as_slice())?;
+    if plot_path.is_some() && !output::is_file_or_new(&out) {
+        return Err(SimError::Output {
+            path: out,
+            why: "--plot reads the trajectory back from --out, which must then be a regular file"
+                .into(),
+        });
+    }
     let progress = std::io::stdout().is_terminal();
     let summary = run::run_scene(&scene, &out, progress)?;
     let plotted = match plot_path {
@@ -277,6 +288,7 @@ fn cmd_run(
 
 fn cmd_plot(csv: &Path, out: Option<PathBuf>) -> Result<(), SimError> {
     let out = out.unwrap_or_else(|| csv.with_extension("svg"));
+    output::refuse_clobbering(&[&out], &[csv])?;
     let traj = plot::read_csv(csv)?;
     let title = csv
         .file_stem()
@@ -302,6 +314,7 @@ fn cmd_trade(
     let (scene, stem) = load(scene_path, overrides)?;
     let csv = out.unwrap_or_else(|| default_path(&stem, "-trade.csv"));
     let svg = plot_path.unwrap_or_else(|| csv.with_extension("svg"));
+    output::refuse_clobbering(&[&csv, &svg], scene_path.as_slice())?;
     say!(
         "lie-sim trade: {} ({}), T = {}, h = {} … {}",
         scene.name,
@@ -375,6 +388,7 @@ fn cmd_sweep(
         }
     }
     let out = out.unwrap_or_else(|| default_path(&stem, "-sweep.csv"));
+    output::refuse_clobbering(&[&out], &[scene_path])?;
     let shard = shard.unwrap_or_else(Shard::all);
     let (spec, steps, h) = sweep::plan(&scene)?;
     let (result, spec2, wall) = sweep::run(&scene, shard, threads.map(|t| t as usize))?;
@@ -422,6 +436,8 @@ fn cmd_sweep(
 }
 
 fn cmd_merge(shards: &[PathBuf], out: &Path) -> Result<(), SimError> {
+    let inputs: Vec<&Path> = shards.iter().map(PathBuf::as_path).collect();
+    output::refuse_clobbering(&[out], &inputs)?;
     let (text, files, members) = sweep::merge(shards)?;
     sweep::write(out, &text)?;
     say!(
@@ -432,6 +448,7 @@ fn cmd_merge(shards: &[PathBuf], out: &Path) -> Result<(), SimError> {
 }
 
 fn main() -> ExitCode {
+    output::install_signal_cleanup();
     let cli = Cli::parse();
     let result = match cli.command {
         None => cmd_run(

@@ -1,0 +1,256 @@
+//! Outputs written like `cp`, and never at the cost of what was there: symbolic links followed,
+//! FIFOs and devices written directly, inputs and repeated outputs refused, and no debris after an
+//! interrupted run (SIGINT, SIGTERM) or a killed one.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+const BIN: &str = env!("CARGO_BIN_EXE_lie-sim");
+
+fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("lie-sim-outputs-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn lie_sim(args: &[&str], cwd: &Path) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Every file under `dir`, sorted, as names relative to it.
+fn files(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+const SCENE: &str = r#"
+[system]
+kind = "free-rigid-body"
+inertia = [1.0, 2.0, 3.0]
+
+[initial]
+momentum = [0.1, 1.0, 0.1]
+
+[integrator]
+method = "splitting"
+step = 0.1
+duration = 0.3
+"#;
+
+/// The directory's entries with the contents of its regular files (a FIFO is not read: that
+/// would wait for a writer).
+fn snapshot(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    files(dir)
+        .into_iter()
+        .map(|f| {
+            let p = dir.join(&f);
+            let regular = std::fs::symlink_metadata(&p).is_ok_and(|m| m.is_file());
+            let bytes = if regular {
+                std::fs::read(&p).unwrap()
+            } else {
+                vec![]
+            };
+            (f, bytes)
+        })
+        .collect()
+}
+
+/// A refused command: exit 1, one line naming the path and why, the directory as it was.
+fn assert_refused(dir: &Path, args: &[&str], needles: &[&str]) {
+    let before = snapshot(dir);
+    let o = lie_sim(args, dir);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    for n in needles {
+        assert!(err.contains(n), "`{n}` missing from: {err}");
+    }
+    assert_eq!(before, snapshot(dir), "{args:?} changed the directory");
+}
+
+#[test]
+fn an_output_that_is_an_input_is_refused() {
+    let dir = temp_dir("input");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    std::os::unix::fs::symlink("s.toml", dir.join("link.toml")).unwrap();
+    assert_refused(
+        &dir,
+        &["run", "s.toml", "--out", "s.toml"],
+        &["s.toml", "input"],
+    );
+    assert_refused(&dir, &["run", "s.toml", "--out", "link.toml"], &["input"]);
+    assert_refused(
+        &dir,
+        &["trade", "s.toml", "--out", "s.toml", "--levels", "2"],
+        &["input"],
+    );
+    assert!(lie_sim(&["run", "s.toml", "--out", "t.csv"], &dir)
+        .status
+        .success());
+    assert_refused(
+        &dir,
+        &["plot", "t.csv", "--out", "t.csv"],
+        &["t.csv", "input"],
+    );
+    assert_refused(&dir, &["merge", "t.csv", "--out", "t.csv"], &["input"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn plot_equal_to_out_is_refused() {
+    let dir = temp_dir("plot-out");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    assert_refused(
+        &dir,
+        &["run", "s.toml", "--out", "x.csv", "--plot", "./x.csv"],
+        &["x.csv", "also the output"],
+    );
+    assert_refused(
+        &dir,
+        &[
+            "trade", "s.toml", "--out", "x.csv", "--plot", "x.csv", "--levels", "2",
+        ],
+        &["also the output"],
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_directory_output_is_refused() {
+    let dir = temp_dir("dir");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    std::fs::create_dir(dir.join("d")).unwrap();
+    assert_refused(&dir, &["run", "s.toml", "--out", "d"], &["directory"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_symlink_output_is_written_through_and_stays_a_link() {
+    let dir = temp_dir("symlink");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    std::fs::write(dir.join("real.csv"), "old").unwrap();
+    std::os::unix::fs::symlink("real.csv", dir.join("link.csv")).unwrap();
+    let o = lie_sim(&["run", "s.toml", "--out", "link.csv"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let meta = std::fs::symlink_metadata(dir.join("link.csv")).unwrap();
+    assert!(meta.file_type().is_symlink());
+    assert!(std::fs::read_to_string(dir.join("real.csv"))
+        .unwrap()
+        .starts_with("t,"));
+    assert_eq!(files(&dir), ["link.csv", "real.csv", "s.toml"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_fifo_and_a_device_are_written_directly() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = temp_dir("fifo");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    let fifo = dir.join("pipe");
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
+    };
+    let o = lie_sim(&["run", "s.toml", "--out", "pipe"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = reader.join().unwrap();
+    assert!(text.starts_with("t,mu1,mu2,mu3"), "{text}");
+    assert_eq!(text.lines().count(), 5, "{text}");
+    assert!(std::fs::metadata(&fifo).unwrap().file_type().is_fifo());
+    let o = lie_sim(&["run", "s.toml", "--out", "/dev/null"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::metadata("/dev/null")
+        .unwrap()
+        .file_type()
+        .is_char_device());
+    // --plot must read the trajectory back: not from a device.
+    assert_refused(
+        &dir,
+        &["run", "s.toml", "--out", "/dev/null", "--plot", "p.svg"],
+        &["regular file"],
+    );
+    assert_eq!(files(&dir), ["pipe", "s.toml"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A long run interrupted by `signal` while it writes: exit 128 + signal, the old output intact, no
+/// temporary file left.
+fn interrupted(signal: &str, code: i32) {
+    let dir = temp_dir(&format!("signal-{signal}"));
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    std::fs::write(dir.join("t.csv"), "old").unwrap();
+    let mut child = Command::new(BIN)
+        .args([
+            "run",
+            "s.toml",
+            "--out",
+            "t.csv",
+            "--duration",
+            "1e7",
+            "--step",
+            "1e-3",
+        ])
+        .current_dir(&dir)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let temp = |d: &Path| files(d).into_iter().find(|f| f.starts_with(".t.csv."));
+    while temp(&dir).is_none() {
+        assert!(
+            start.elapsed() < Duration::from_secs(20),
+            "no temporary file"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    std::thread::sleep(Duration::from_millis(100)); // let it write some rows
+    let pid = child.id().to_string();
+    assert!(Command::new("kill")
+        .args([signal, &pid])
+        .status()
+        .unwrap()
+        .success());
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(code), "{signal}");
+    assert_eq!(std::fs::read_to_string(dir.join("t.csv")).unwrap(), "old");
+    assert_eq!(files(&dir), ["s.toml", "t.csv"], "{signal}: debris left");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn sigint_and_sigterm_leave_the_old_output_and_no_debris() {
+    interrupted("-INT", 130);
+    interrupted("-TERM", 143);
+}
+
+/// A run killed with SIGKILL leaves its temporary file; the next run into the directory removes it.
+#[test]
+fn temporary_files_of_dead_runs_are_cleaned_by_the_next_run() {
+    let dir = temp_dir("stale");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    std::fs::write(dir.join(".t.csv.4194305.tmp"), "debris").unwrap();
+    let o = lie_sim(&["run", "s.toml", "--out", "t.csv"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(files(&dir), ["s.toml", "t.csv"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
