@@ -502,42 +502,50 @@ pub fn momenta_on_sphere<A: Vector>(
 }
 
 /// `count` momenta on the energy level h(μ) = `energy` of a system with quadratic (kinetic)
-/// Hamiltonian `h(sμ) = s² h(μ)`: the sphere points u of [`sphere_point`] scaled radially,
-/// μ = u √(E / h(u)). Directions are uniform; the density on the ellipsoid is the radial
-/// projection of the uniform one, not its surface measure.
-///
-/// Errors: E not finite and positive; h(u) ≤ 0 or not finite; or h not quadratic (the scaled
-/// point misses the level by more than 1e-12 relative).
+/// Hamiltonian: [`energy_level_point`] for the indices 0..count.
 pub fn momenta_on_energy_level<G: LieGroup, S: System<G>>(
     system: &S,
     energy: f64,
     count: usize,
     seed: u64,
 ) -> Result<Vec<G::Algebra>, IntegratorError> {
+    (0..count as u64)
+        .map(|i| energy_level_point::<G, S>(system, energy, seed, i))
+        .collect()
+}
+
+/// Point number `index` on the energy level h(μ) = `energy` of a system with quadratic (kinetic)
+/// Hamiltonian `h(sμ) = s² h(μ)`: the sphere point u of [`sphere_point`] scaled radially,
+/// μ = u √(E / h(u)). Directions are uniform; the density on the ellipsoid is the radial
+/// projection of the uniform one, not its surface measure. Depends only on (system, E, seed,
+/// index), so a shard of a sweep draws its own members and nothing else.
+///
+/// Errors: E not finite and positive; h(u) ≤ 0 or not finite; or h not quadratic (the scaled
+/// point misses the level by more than 1e-12 relative).
+pub fn energy_level_point<G: LieGroup, S: System<G>>(
+    system: &S,
+    energy: f64,
+    seed: u64,
+    index: u64,
+) -> Result<G::Algebra, IntegratorError> {
     if !energy.is_finite() || energy <= 0.0 {
         return Err(IntegratorError::InvalidParameter {
             reason: format!("energy level E = {energy} must be finite and positive"),
         });
     }
-    (0..count as u64)
-        .map(|i| {
-            let u: G::Algebra = sphere_point(G::dim(), 1.0, seed, i)?;
-            let hu = system.hamiltonian(&u);
-            if !hu.is_finite() || hu <= 0.0 {
-                return Err(IntegratorError::InvalidParameter {
-                    reason: format!(
-                        "h(u) = {hu} on the unit sphere: not a positive kinetic energy"
-                    ),
-                });
-            }
-            let mu = u.scale((energy / hu).sqrt());
-            let e = system.hamiltonian(&mu);
-            if (e - energy).abs() > 1e-12 * energy {
-                return Err(IntegratorError::InvalidParameter {
-                    reason: format!("h is not quadratic: scaling to E = {energy} gave {e}"),
-                });
-            }
-            Ok(mu)
-        })
-        .collect()
+    let u: G::Algebra = sphere_point(G::dim(), 1.0, seed, index)?;
+    let hu = system.hamiltonian(&u);
+    if !hu.is_finite() || hu <= 0.0 {
+        return Err(IntegratorError::InvalidParameter {
+            reason: format!("h(u) = {hu} on the unit sphere: not a positive kinetic energy"),
+        });
+    }
+    let mu = u.scale((energy / hu).sqrt());
+    let e = system.hamiltonian(&mu);
+    if (e - energy).abs() > 1e-12 * energy {
+        return Err(IntegratorError::InvalidParameter {
+            reason: format!("h is not quadratic: scaling to E = {energy} gave {e}"),
+        });
+    }
+    Ok(mu)
 }

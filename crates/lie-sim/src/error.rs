@@ -124,6 +124,14 @@ pub enum SimError {
         /// Why.
         why: String,
     },
+    /// The command would take more steps or write more bytes than the limits of `bounds`.
+    #[error("{what}: {message}; pass --allow-large to run it anyway")]
+    TooLarge {
+        /// The command, e.g. `run`.
+        what: String,
+        /// The estimate and the limit it exceeds.
+        message: String,
+    },
     /// An output file cannot be created, written or renamed into place.
     #[error("cannot write {path}: {source}")]
     Write {

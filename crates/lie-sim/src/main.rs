@@ -22,6 +22,7 @@ macro_rules! say {
     }};
 }
 
+mod bounds;
 mod error;
 mod output;
 mod plot;
@@ -157,6 +158,10 @@ struct OverrideArgs {
     /// Replace the scene's output stride.
     #[arg(long)]
     stride: Option<u64>,
+    /// Go ahead beyond the work limits (10⁹ steps, 1 GiB of output) that a command checks
+    /// before it starts.
+    #[arg(long)]
+    allow_large: bool,
 }
 
 impl From<OverrideArgs> for Overrides {
@@ -216,7 +221,7 @@ fn cmd_run(
         });
     }
     let progress = std::io::stdout().is_terminal();
-    let summary = run::run_scene(&scene, &out, progress)?;
+    let summary = run::run_scene(&scene, &out, progress, overrides.allow_large)?;
     let plotted = match plot_path {
         Some(p) => {
             let traj = plot::read_csv(&out)?;
@@ -315,6 +320,8 @@ fn cmd_trade(
     let csv = out.unwrap_or_else(|| default_path(&stem, "-trade.csv"));
     let svg = plot_path.unwrap_or_else(|| csv.with_extension("svg"));
     output::refuse_clobbering(&[&csv, &svg], scene_path.as_slice())?;
+    trade::estimate(&scene, levels as usize, repeats as usize)
+        .check("trade", overrides.allow_large)?;
     say!(
         "lie-sim trade: {} ({}), T = {}, h = {} … {}",
         scene.name,
@@ -391,6 +398,7 @@ fn cmd_sweep(
     output::refuse_clobbering(&[&out], &[scene_path])?;
     let shard = shard.unwrap_or_else(Shard::all);
     let (spec, steps, h) = sweep::plan(&scene)?;
+    sweep::estimate(&spec, shard, steps).check("sweep", overrides.allow_large)?;
     let (result, spec2, wall) = sweep::run(&scene, shard, threads.map(|t| t as usize))?;
     debug_assert_eq!(spec, spec2);
     let fp = sweep::fingerprint(&scene, &spec, steps, h);
@@ -459,6 +467,7 @@ fn main() -> ExitCode {
                 duration: None,
                 step: None,
                 stride: None,
+                allow_large: false,
             },
         ),
         Some(Command::Run {

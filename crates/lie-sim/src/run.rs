@@ -86,14 +86,28 @@ fn write_row(w: &mut impl Write, sim: &dyn Simulation) -> std::io::Result<()> {
     writeln!(w)
 }
 
-/// Builds the scene's simulation and runs it, writing the CSV to `out` (atomically).
-pub fn run_scene(scene: &Scene, out: &Path, progress: bool) -> Result<RunSummary, SimError> {
+/// Builds the scene's simulation and runs it, writing the CSV to `out` (atomically), after
+/// checking the work against the limits of [`crate::bounds`] (unless `allow_large`).
+pub fn run_scene(
+    scene: &Scene,
+    out: &Path,
+    progress: bool,
+    allow_large: bool,
+) -> Result<RunSummary, SimError> {
     let mut sim = build(
         &scene.system,
         &scene.method,
         scene.reconstruct,
         &scene.solver,
     )?;
+    let n = u128::from(scene.steps());
+    let stages = scene.method.composition.as_ref().map_or(1, |c| c.stages()) as u128;
+    let rows = 2 + n / u128::from(scene.stride);
+    let estimate = crate::bounds::Estimate {
+        steps: n.saturating_mul(stages),
+        bytes: crate::bounds::Estimate::csv(rows, header(sim.as_ref()).len() as u128),
+    };
+    estimate.check("run", allow_large)?;
     run_simulation(sim.as_mut(), scene, out, progress)
 }
 

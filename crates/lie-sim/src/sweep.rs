@@ -30,7 +30,7 @@ use crate::output::write_atomic;
 use crate::scene::{steps_for, Scene, SweepKind, SweepSpec};
 use crate::sim::{dispatch, Boxed, Job};
 use integrators::ensemble::{
-    momenta_on_energy_level, momenta_on_sphere, Ensemble, Execution, Shard, Summary,
+    energy_level_point, sphere_point, Ensemble, Execution, Shard, Summary,
 };
 use integrators::IntegratorError;
 use lie_groups::{CayleyGroup, Vector};
@@ -83,6 +83,9 @@ impl Job for SweepJob<'_> {
     {
         let dim = G::dim();
         let (n, seed) = (self.spec.count, self.spec.seed);
+        // Only this shard's members are drawn (each from (seed, index) alone), so a shard costs
+        // in proportion to its size whatever N is.
+        let indices = self.shard.indices(n);
         let members: Vec<G::Algebra> = match self.spec.kind {
             SweepKind::MomentaOnSphere => {
                 let radius = mu0.norm();
@@ -92,21 +95,32 @@ impl Job for SweepJob<'_> {
                             .into(),
                     });
                 }
-                momenta_on_sphere(dim, radius, n, seed)?
+                indices
+                    .iter()
+                    .map(|&i| sphere_point(dim, radius, seed, i as u64))
+                    .collect::<Result<_, _>>()?
             }
             SweepKind::MomentaOnEnergyLevel => {
-                momenta_on_energy_level::<G, S>(&system, system.hamiltonian(&mu0), n, seed)?
+                let e0 = system.hamiltonian(&mu0);
+                indices
+                    .iter()
+                    .map(|&i| energy_level_point::<G, S>(&system, e0, seed, i as u64))
+                    .collect::<Result<_, _>>()?
             }
         };
         let ensemble =
             Ensemble::new(members, self.h, self.steps)?.monitor_every(self.spec.monitor_every);
         let build = |_i: usize, mu: &G::Algebra| make(system.clone(), mu.clone(), g0.clone());
-        let summaries: Vec<Summary<G::Algebra>> = match self.pool {
-            None => ensemble.run_shard(self.shard, Execution::Sequential, &build),
+        let mut summaries: Vec<Summary<G::Algebra>> = match self.pool {
+            None => ensemble.run_shard(Shard::all(), Execution::Sequential, &build),
             Some(pool) => {
-                pool.install(|| ensemble.run_shard(self.shard, Execution::Parallel, &build))
+                pool.install(|| ensemble.run_shard(Shard::all(), Execution::Parallel, &build))
             }
         };
+        // The ensemble numbered the shard's members from 0: give them their sweep indices.
+        for (summary, &index) in summaries.iter_mut().zip(&indices) {
+            summary.index = index;
+        }
         let completed: Vec<&Summary<G::Algebra>> = summaries
             .iter()
             .filter(|s| s.status.is_completed())
@@ -133,6 +147,16 @@ impl Job for SweepJob<'_> {
                 .reduce(f64::max),
             first_failure,
         })
+    }
+}
+
+/// The work of one shard of a sweep before it starts: its members × the steps of each, and its
+/// rows of the summary CSV.
+pub fn estimate(spec: &SweepSpec, shard: Shard, steps: usize) -> crate::bounds::Estimate {
+    let members = (spec.count / shard.count()) as u128 + 1;
+    crate::bounds::Estimate {
+        steps: members.saturating_mul(steps as u128),
+        bytes: crate::bounds::Estimate::csv(members + 2, 12),
     }
 }
 

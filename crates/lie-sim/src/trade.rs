@@ -264,6 +264,28 @@ pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
     })
 }
 
+/// The work of [`trade`] before it starts: every candidate over the ladder (a composite step
+/// counts its stages), `repeats` times, and the two reference runs (the order-8 reference's 17
+/// stages at h_min/2 and h_min; the exact flow's one step and its run at h_min). Bytes: the table.
+pub fn estimate(scene: &Scene, levels: usize, repeats: usize) -> crate::bounds::Estimate {
+    let per_unit_h: u128 = candidates()
+        .iter()
+        .map(|m| m.composition.as_ref().map_or(1, |c| c.stages()) as u128)
+        .sum();
+    let base = u128::from(steps_for(scene.duration, scene.step));
+    // Σ_k T/(h₀/2ᵏ) over the ladder = (2^L − 1)·T/h₀.
+    let ladder = base.saturating_mul((1u128 << levels.min(100)) - 1);
+    let h_min = scene.step / f64::powi(2.0, levels as i32 - 1);
+    let reference = u128::from(steps_for(scene.duration, h_min)).saturating_mul(3 * 17);
+    crate::bounds::Estimate {
+        steps: ladder
+            .saturating_mul(per_unit_h)
+            .saturating_mul(repeats as u128)
+            .saturating_add(reference),
+        bytes: crate::bounds::Estimate::csv((candidates().len() * (levels + 1)) as u128, 11),
+    }
+}
+
 /// One line of the work-precision table.
 #[derive(Debug, Clone)]
 pub struct TradeRow {

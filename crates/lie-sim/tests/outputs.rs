@@ -1,6 +1,7 @@
 //! Outputs written like `cp`, and never at the cost of what was there: symbolic links followed,
 //! FIFOs and devices written directly, inputs and repeated outputs refused, and no debris after an
-//! interrupted run (SIGINT, SIGTERM) or a killed one.
+//! interrupted run (SIGINT, SIGTERM) or a killed one. Work bounded by what was asked: limits
+//! checked up front, a shard costing only its own members.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -208,6 +209,7 @@ fn interrupted(signal: &str, code: i32) {
             "1e7",
             "--step",
             "1e-3",
+            "--allow-large",
         ])
         .current_dir(&dir)
         .stdout(std::process::Stdio::null())
@@ -252,5 +254,125 @@ fn temporary_files_of_dead_runs_are_cleaned_by_the_next_run() {
     let o = lie_sim(&["run", "s.toml", "--out", "t.csv"], &dir);
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(files(&dir), ["s.toml", "t.csv"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A 1000-member shard of a sweep of N = 10¹² members draws only its own members: it runs in a
+/// fraction of a second (materialising N momenta would need 24 TB) and writes rows 0–999; a
+/// sweep of 2⁶⁴ − 1 members is accepted too.
+#[test]
+fn a_small_shard_of_a_huge_sweep_costs_only_its_own_members() {
+    let dir = temp_dir("huge-sweep");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/sweep.toml");
+    let start = Instant::now();
+    let o = lie_sim(
+        &[
+            "sweep",
+            scene.to_str().unwrap(),
+            "--out",
+            "s.csv",
+            "--count",
+            "1000000000000",
+            "--shard",
+            "0/1000000000",
+            "--duration",
+            "0.05",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(start.elapsed() < Duration::from_secs(20));
+    let text = std::fs::read_to_string(dir.join("s.csv")).unwrap();
+    assert!(text.starts_with("# lie-sim sweep: members = 1000000000000, shard = 0/1000000000"));
+    let rows: Vec<&str> = text.lines().skip(2).collect();
+    assert_eq!(rows.len(), 1000);
+    assert!(rows[999].starts_with("999,completed"), "{}", rows[999]);
+    let o = lie_sim(
+        &[
+            "sweep",
+            scene.to_str().unwrap(),
+            "--out",
+            "m.csv",
+            "--count",
+            "18446744073709551615",
+            "--shard",
+            "18446744073709551614/18446744073709551615",
+            "--duration",
+            "0.05",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(dir.join("m.csv")).unwrap();
+    assert!(text
+        .lines()
+        .nth(2)
+        .unwrap()
+        .starts_with("18446744073709551614,completed"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Work beyond the limits (10⁹ steps, 1 GiB of output) is refused before it starts, with the
+/// figures and the way around; nothing is written.
+#[test]
+fn work_beyond_the_limits_is_refused_up_front() {
+    let dir = temp_dir("bounds");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    assert_refused(
+        &dir,
+        &[
+            "run",
+            "s.toml",
+            "--out",
+            "t.csv",
+            "--duration",
+            "1e7",
+            "--step",
+            "1e-3",
+        ],
+        &["run", "1.000e10 integrator steps", "--allow-large"],
+    );
+    assert_refused(
+        &dir,
+        &[
+            "run",
+            "s.toml",
+            "--out",
+            "t.csv",
+            "--duration",
+            "5e5",
+            "--step",
+            "1e-3",
+        ],
+        &["GiB of output", "--stride", "--allow-large"],
+    );
+    assert_refused(
+        &dir,
+        &[
+            "trade",
+            "s.toml",
+            "--out",
+            "t.csv",
+            "--duration",
+            "1e3",
+            "--levels",
+            "12",
+        ],
+        &["trade", "integrator steps"],
+    );
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/sweep.toml");
+    assert_refused(
+        &dir,
+        &[
+            "sweep",
+            scene.to_str().unwrap(),
+            "--out",
+            "w.csv",
+            "--count",
+            "1000000000000",
+        ],
+        &["sweep", "integrator steps"],
+    );
+    assert_eq!(files(&dir), ["s.toml"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
