@@ -15,11 +15,25 @@
 //! The scene format is documented in [`scene`]; examples live in `examples/scenes/`.
 
 /// `println!` to stdout that ignores a closed pipe (`lie-sim run … | head`) instead of panicking.
+/// `--quiet`: no summary on stdout and no progress bar (errors still go to stderr).
+static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+fn quiet() -> bool {
+    QUIET.load(std::sync::atomic::Ordering::Relaxed)
+}
+
 macro_rules! say {
     ($($arg:tt)*) => {{
         use std::io::Write as _;
-        let _ = writeln!(std::io::stdout(), $($arg)*);
+        if !quiet() {
+            let _ = writeln!(std::io::stdout(), $($arg)*);
+        }
     }};
+}
+
+/// Progress is drawn on stderr, only when it is a terminal and `--quiet` is not given.
+fn show_progress() -> bool {
+    !quiet() && std::io::stderr().is_terminal()
 }
 
 mod bounds;
@@ -56,6 +70,9 @@ const DEFAULT_OUT_DIR: &str = "target/lie-sim";
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Print nothing but errors (no summary, no progress bar).
+    #[arg(short, long, global = true)]
+    quiet: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -220,7 +237,7 @@ fn cmd_run(
                 .into(),
         });
     }
-    let progress = std::io::stdout().is_terminal();
+    let progress = show_progress();
     let summary = run::run_scene(&scene, &out, progress, overrides.allow_large)?;
     let plotted = match plot_path {
         Some(p) => {
@@ -331,9 +348,27 @@ fn cmd_trade(
         scene.step / f64::powi(2.0, levels as i32 - 1)
     );
     say!("{}", trade::table_header());
-    let report = trade::trade(&scene, levels as usize, repeats as usize, |r| {
-        say!("{}", trade::table_line(r))
-    })?;
+    let bar = show_progress().then(|| {
+        let runs = trade::candidates().len() * levels as usize;
+        let b = indicatif::ProgressBar::new(runs as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} runs (eta {eta})",
+        ) {
+            b.set_style(style);
+        }
+        b
+    });
+    let report = trade::trade(&scene, levels as usize, repeats as usize, |r| match &bar {
+        Some(b) => {
+            b.inc(1);
+            b.suspend(|| say!("{}", trade::table_line(r)));
+        }
+        None => say!("{}", trade::table_line(r)),
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let report = report?;
     say!(
         "reference: {} (estimated error {:.1e})",
         report.reference.description,
@@ -396,10 +431,23 @@ fn cmd_sweep(
     }
     let out = out.unwrap_or_else(|| default_path(&stem, "-sweep.csv"));
     output::refuse_clobbering(&[&out], &[scene_path])?;
-    let shard = shard.unwrap_or_else(Shard::all);
+    let shard = match shard {
+        Some(s) => s,
+        None => slurm_shard()?.unwrap_or_else(Shard::all),
+    };
     let (spec, steps, h) = sweep::plan(&scene)?;
     sweep::estimate(&spec, shard, steps).check("sweep", overrides.allow_large)?;
-    let (result, spec2, wall) = sweep::run(&scene, shard, threads.map(|t| t as usize))?;
+    let spinner = show_progress().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!("sweep: shard {shard} of {} members", spec.count));
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
+        b
+    });
+    let ran = sweep::run(&scene, shard, threads.map(|t| t as usize));
+    if let Some(b) = spinner {
+        b.finish_and_clear();
+    }
+    let (result, spec2, wall) = ran?;
     debug_assert_eq!(spec, spec2);
     let fp = sweep::fingerprint(&scene, &spec, steps, h);
     sweep::write(&out, &sweep::to_csv(&result, spec.count, shard, fp))?;
@@ -443,6 +491,36 @@ fn cmd_sweep(
     Ok(())
 }
 
+/// The shard of a Slurm job-array task: `SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN` of
+/// `SLURM_ARRAY_TASK_COUNT` (`None` outside a job array; an error naming the variable when one is
+/// set but not a valid shard).
+fn slurm_shard() -> Result<Option<Shard>, SimError> {
+    let var = |name: &str| std::env::var(name).ok();
+    let (Some(id), Some(count)) = (var("SLURM_ARRAY_TASK_ID"), var("SLURM_ARRAY_TASK_COUNT"))
+    else {
+        return Ok(None);
+    };
+    let num = |name: &str, v: &str| {
+        v.trim().parse::<usize>().map_err(|_| SimError::Sweep {
+            message: format!("{name} = {v:?} is not a non-negative integer"),
+        })
+    };
+    let id = num("SLURM_ARRAY_TASK_ID", &id)?;
+    let count = num("SLURM_ARRAY_TASK_COUNT", &count)?;
+    let min = match var("SLURM_ARRAY_TASK_MIN") {
+        Some(m) => num("SLURM_ARRAY_TASK_MIN", &m)?,
+        None => 0,
+    };
+    let index = id.checked_sub(min).ok_or_else(|| SimError::Sweep {
+        message: format!("SLURM_ARRAY_TASK_ID = {id} is below SLURM_ARRAY_TASK_MIN = {min}"),
+    })?;
+    Shard::new(index, count)
+        .map(Some)
+        .map_err(|e| SimError::Sweep {
+            message: format!("the Slurm array task {index} of {count}: {e}"),
+        })
+}
+
 fn cmd_merge(shards: &[PathBuf], out: &Path) -> Result<(), SimError> {
     let inputs: Vec<&Path> = shards.iter().map(PathBuf::as_path).collect();
     output::refuse_clobbering(&[out], &inputs)?;
@@ -458,6 +536,7 @@ fn cmd_merge(shards: &[PathBuf], out: &Path) -> Result<(), SimError> {
 fn main() -> ExitCode {
     output::install_signal_cleanup();
     let cli = Cli::parse();
+    QUIET.store(cli.quiet, std::sync::atomic::Ordering::Relaxed);
     let result = match cli.command {
         None => cmd_run(
             None,

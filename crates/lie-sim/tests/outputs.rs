@@ -376,3 +376,57 @@ fn work_beyond_the_limits_is_refused_up_front() {
     assert_eq!(files(&dir), ["s.toml"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `--quiet` prints nothing on stdout (the outputs are still written).
+#[test]
+fn quiet_prints_nothing() {
+    let dir = temp_dir("quiet");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    let o = lie_sim(&["--quiet", "run", "s.toml", "--out", "t.csv"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(o.stdout.is_empty() && o.stderr.is_empty());
+    assert!(dir.join("t.csv").exists());
+    let o = lie_sim(&["run", "s.toml", "--out", "u.csv"], &dir);
+    assert!(!o.stdout.is_empty());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// In a Slurm job array, `sweep` without `--shard` runs task (ID − MIN) of COUNT; a malformed
+/// variable is an error naming it.
+#[test]
+fn sweep_shard_defaults_from_a_slurm_job_array() {
+    let dir = temp_dir("slurm");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/sweep.toml");
+    let run = |id: &str| {
+        Command::new(BIN)
+            .args([
+                "sweep",
+                scene.to_str().unwrap(),
+                "--out",
+                "w.csv",
+                "--count",
+                "8",
+            ])
+            .args(["--duration", "0.05"])
+            .env("SLURM_ARRAY_TASK_ID", id)
+            .env("SLURM_ARRAY_TASK_MIN", "1")
+            .env("SLURM_ARRAY_TASK_COUNT", "4")
+            .current_dir(&dir)
+            .output()
+            .unwrap()
+    };
+    let o = run("3");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(dir.join("w.csv")).unwrap();
+    assert!(text.contains("shard = 2/4"), "{text}");
+    let rows: Vec<&str> = text.lines().skip(2).collect();
+    assert_eq!(rows.len(), 2);
+    assert!(
+        rows[0].starts_with("4,") && rows[1].starts_with("5,"),
+        "{text}"
+    );
+    let o = run("three");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("SLURM_ARRAY_TASK_ID"), "{}", stderr(&o));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
