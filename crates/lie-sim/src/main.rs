@@ -81,7 +81,7 @@ enum Command {
     Run {
         /// The scene file (TOML); the embedded default scene when left out.
         scene: Option<PathBuf>,
-        /// Trajectory CSV [default: target/lie-sim/<scene>.csv].
+        /// Trajectory CSV (default: `target/lie-sim/<scene>.csv`).
         #[arg(short, long)]
         out: Option<PathBuf>,
         /// Also draw the trajectory plot to this SVG.
@@ -102,7 +102,7 @@ enum Command {
     Trade {
         /// The scene file (TOML); the embedded default scene when left out.
         scene: Option<PathBuf>,
-        /// Table CSV [default: target/lie-sim/<scene>-trade.csv].
+        /// Table CSV (default: `target/lie-sim/<scene>-trade.csv`).
         #[arg(short, long)]
         out: Option<PathBuf>,
         /// Error-against-cost SVG [default: the table's path with extension .svg].
@@ -123,7 +123,7 @@ enum Command {
     Sweep {
         /// The scene file (TOML) with a [sweep] table.
         scene: PathBuf,
-        /// Summary CSV [default: target/lie-sim/<scene>-sweep.csv].
+        /// Summary CSV (default: `target/lie-sim/<scene>-sweep.csv`).
         #[arg(short, long)]
         out: Option<PathBuf>,
         /// Run only shard i of n, 0-based (0 ≤ i < n): the members ⌊iN/n⌋ … ⌊(i+1)N/n⌋ − 1.

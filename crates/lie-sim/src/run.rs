@@ -69,19 +69,29 @@ pub fn header(sim: &dyn Simulation) -> Vec<String> {
     h
 }
 
+/// A CSV cell: the shortest decimal that reads back to the same double (`{:?}`), in exponent form
+/// for very small or large magnitudes (`1e-300`, not 300 digits).
+pub struct Cell(pub f64);
+
+impl std::fmt::Display for Cell {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:?}", self.0)
+    }
+}
+
 fn write_row(w: &mut impl Write, sim: &dyn Simulation) -> std::io::Result<()> {
-    write!(w, "{}", sim.time())?;
+    write!(w, "{}", Cell(sim.time()))?;
     for x in sim.momentum() {
-        write!(w, ",{x}")?;
+        write!(w, ",{}", Cell(x))?;
     }
     if let Some(g) = sim.group_matrix() {
         for x in g {
-            write!(w, ",{x}")?;
+            write!(w, ",{}", Cell(x))?;
         }
     }
-    write!(w, ",{}", sim.energy())?;
+    write!(w, ",{}", Cell(sim.energy()))?;
     if let Some(c) = sim.casimir() {
-        write!(w, ",{c}")?;
+        write!(w, ",{}", Cell(c))?;
     }
     writeln!(w)
 }
@@ -211,6 +221,24 @@ mod tests {
         std::env::temp_dir()
             .join(format!("lie-sim-run-{}", std::process::id()))
             .join(name)
+    }
+
+    #[test]
+    fn cells_are_short_and_read_back_exactly() {
+        for x in [
+            1e-300,
+            0.1,
+            1e16,
+            -2.5e-7,
+            123.456,
+            0.0,
+            f64::MIN_POSITIVE / 8.0,
+        ] {
+            let text = Cell(x).to_string();
+            assert!(text.len() <= 24, "{text}");
+            assert_eq!(text.parse::<f64>().unwrap(), x, "{text}");
+        }
+        assert_eq!(Cell(1e-300).to_string(), "1e-300");
     }
 
     #[test]

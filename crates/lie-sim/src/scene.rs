@@ -725,6 +725,15 @@ impl Scene {
         let it = &raw.integrator;
         let step = positive("integrator.step", it.step).map_err(|(f, m)| bad(&f, m))?;
         let duration = positive("integrator.duration", it.duration).map_err(|(f, m)| bad(&f, m))?;
+        if step > duration {
+            return Err(bad(
+                "integrator.step",
+                format!(
+                    "h = {step} exceeds the duration T = {duration}: give a step no longer than \
+                     the run (one step to T is step = duration)"
+                ),
+            ));
+        }
         if duration / step > MAX_STEPS {
             return Err(bad(
                 "integrator.duration",
@@ -891,9 +900,13 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
         Some(name) => {
             let field = "integrator.composition";
             let scheme: CompositionScheme = name.parse().map_err(|_| {
+                // The built-in list, and the order-10 recursive schemes (81 and 625 stages)
+                // that parse too but are left out of it.
                 let known: Vec<String> = CompositionScheme::builtin()
                     .iter()
                     .map(|c| c.name().to_string())
+                    .chain(["triple-jump-10".to_string(), "suzuki-10".to_string()])
+                    .filter(|n| n.parse::<CompositionScheme>().is_ok())
                     .collect();
                 (
                     field.to_string(),
@@ -1221,8 +1234,14 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
         }
         SystemKind::GeodesicSoN => {
             let n = required(kind, "system.n", &s.n)?;
-            if !(2..=200).contains(&n) {
-                return Err(("system.n".into(), format!("must lie in 2..=200, got {n}")));
+            if !crate::sim::SO_N_SIZES.contains(&n) {
+                return Err((
+                    "system.n".into(),
+                    format!(
+                        "SO({n}) is not compiled into lie-sim: n must be one of {:?}",
+                        crate::sim::SO_N_SIZES
+                    ),
+                ));
             }
             let inertia = match required(kind, "system.inertia", &s.inertia)? {
                 RawInertia::Diagonal(d) if d.len() == n => {

@@ -9,7 +9,7 @@
 //! with a potential, rk4 off SO(3), the exact flow off the free body, …) are left out. Each run is
 //! compared at the final time T with a reference solution: the exact flow on the free rigid body,
 //! elsewhere the order-8 composition at a step smaller than the finest of the ladder (see
-//! [`reference`]). The table reports, per run, the cost (ns per step, total time),
+//! [`reference()`]). The table reports, per run, the cost (ns per step, total time),
 //! the error at T and the maximum relative energy error.
 //!
 //! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
@@ -20,7 +20,7 @@
 use crate::error::SimError;
 use crate::output::write_atomic;
 use crate::plot::{plot_loglog, Curve};
-use crate::run::relative_error;
+use crate::run::{relative_error, Cell};
 use crate::scene::{steps_for, Method, MethodSpec, Scene, System, TauKind};
 use crate::sim::{build, Simulation};
 use integrators::splitting::SplittingScheme;
@@ -464,12 +464,12 @@ pub fn to_csv(rows: &[TradeRow]) -> String {
             r.method.tau_label(),
             r.method.theta_label(),
             r.method.composition_label(),
-            r.h,
+            Cell(r.h),
             r.steps,
-            r.ns_per_step,
-            r.seconds,
-            r.error,
-            r.max_energy_error,
+            Cell(r.ns_per_step),
+            Cell(r.seconds),
+            Cell(r.error),
+            Cell(r.max_energy_error),
             r.failure.as_deref().unwrap_or("").replace(',', ";")
         );
     }

@@ -725,7 +725,7 @@ fn rk4_on_a_group_other_than_so3_is_reported_as_not_available() {
 }
 
 #[test]
-fn so_n_of_a_size_not_compiled_in_is_reported_as_not_available() {
+fn so_n_of_a_size_not_compiled_in_is_refused_naming_the_field_and_the_sizes() {
     let text = std::fs::read_to_string(scenes_dir().join("geodesic-so-n.toml"))
         .unwrap()
         .replace("n = 4", "n = 7")
@@ -734,7 +734,11 @@ fn so_n_of_a_size_not_compiled_in_is_reported_as_not_available() {
             "[1.0, 0.2, -0.3, 0.5, 0.1, 0.4]",
             "[1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]",
         );
-    assert_rejected("so7", &text, &["not yet available", "SO(7)"]);
+    assert_rejected(
+        "so7",
+        &text,
+        &["system.n", "SO(7)", "[3, 4, 5, 6, 8, 10, 20, 50]"],
+    );
 }
 
 #[test]
