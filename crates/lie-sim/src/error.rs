@@ -124,6 +124,12 @@ pub enum SimError {
         /// Why.
         why: String,
     },
+    /// `lie-sim choose` found nothing meeting the target, or cannot write the chosen scene.
+    #[error("choose: {message}")]
+    Choose {
+        /// What happened, with the best value reached.
+        message: String,
+    },
     /// The command would take more steps or write more bytes than the limits of `bounds`.
     #[error("{what}: {message}; pass --allow-large to run it anyway")]
     TooLarge {

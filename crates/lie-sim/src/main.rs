@@ -37,6 +37,7 @@ fn show_progress() -> bool {
 }
 
 mod bounds;
+mod choose;
 mod error;
 mod output;
 mod plot;
@@ -154,8 +155,57 @@ enum Command {
         #[arg(short, long)]
         out: PathBuf,
     },
+    /// The cheapest method and step meeting an accuracy target on this scene, measured by a
+    /// bounded trade (breadth first over the steps), with the runner-up.
+    Choose {
+        /// The scene file (TOML); the embedded default scene when left out.
+        scene: Option<PathBuf>,
+        /// The accuracy to meet (relative), e.g. 1e-8.
+        #[arg(long)]
+        target: f64,
+        /// What must meet it: the error at T against the reference, or the maximum relative
+        /// energy error over the run.
+        #[arg(long, value_enum, default_value_t = choose::Metric::Error)]
+        metric: choose::Metric,
+        /// The horizon T (replaces the scene's duration).
+        #[arg(long)]
+        horizon: Option<f64>,
+        /// Wall-clock budget of the search: seconds, or with a unit (`30s`, `2m`, `1h`).
+        #[arg(long, default_value = "30s", value_parser = parse_budget)]
+        budget: std::time::Duration,
+        /// Number of step sizes h, h/2, …, from the scene's step.
+        #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u32).range(1..=12))]
+        levels: u32,
+        /// Write the scene with the chosen method and step here.
+        #[arg(long)]
+        write: Option<PathBuf>,
+        #[command(flatten)]
+        overrides: OverrideArgs,
+    },
     /// Print the embedded default scene (a commented starting point for your own).
     DefaultScene,
+}
+
+fn parse_budget(s: &str) -> Result<std::time::Duration, String> {
+    let s = s.trim();
+    let (num, unit) = match s.find(|c: char| c.is_ascii_alphabetic()) {
+        Some(i) => (&s[..i], &s[i..]),
+        None => (s, "s"),
+    };
+    let scale = match unit {
+        "s" => 1.0,
+        "m" | "min" => 60.0,
+        "h" => 3600.0,
+        _ => return Err(format!("{s:?}: the unit must be s, m or h")),
+    };
+    let x: f64 = num
+        .trim()
+        .parse()
+        .map_err(|_| format!("{s:?} is not a duration like 30s, 2m or 1h"))?;
+    if !(x.is_finite() && x > 0.0) {
+        return Err(format!("{s:?}: the budget must be positive"));
+    }
+    std::time::Duration::try_from_secs_f64(x * scale).map_err(|e| format!("{s:?}: {e}"))
 }
 
 fn parse_shard(s: &str) -> Result<Shard, String> {
@@ -491,6 +541,103 @@ fn cmd_sweep(
     Ok(())
 }
 
+#[allow(clippy::too_many_arguments)] // one per command-line option
+fn cmd_choose(
+    scene_path: Option<&Path>,
+    target: f64,
+    metric: choose::Metric,
+    budget: std::time::Duration,
+    levels: u32,
+    write: Option<PathBuf>,
+    overrides: OverrideArgs,
+) -> Result<(), SimError> {
+    if let Some(w) = &write {
+        output::refuse_clobbering(&[w], scene_path.as_slice())?;
+    }
+    let (scene, _) = load(scene_path, overrides)?;
+    let spinner = show_progress().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!("choose: measuring (budget {budget:?})"));
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
+        b
+    });
+    let choice = choose::choose(&scene, target, metric, levels as usize, budget);
+    if let Some(b) = spinner {
+        b.finish_and_clear();
+    }
+    let choice = choice?;
+    let what = match metric {
+        choose::Metric::Error => "error at T",
+        choose::Metric::Energy => "max |dE/E|",
+    };
+    let Some(best) = &choice.best else {
+        let reached = choice.most_accurate.as_ref().map_or_else(
+            || "no run completed".to_string(),
+            |c| {
+                format!(
+                    "the best run reached {:.2e} ({} at h = {})",
+                    c.value, c.method, c.h
+                )
+            },
+        );
+        return Err(SimError::Choose {
+            message: format!(
+                "no method meets {what} ≤ {target:e} on {} within the budget ({} runs{}); {reached}",
+                scene.name,
+                choice.runs,
+                if choice.truncated { ", budget exhausted" } else { "" }
+            ),
+        });
+    };
+    say!(
+        "lie-sim choose: {} ({}), T = {}",
+        scene.name,
+        scene.system.kind(),
+        scene.duration
+    );
+    say!("  target       {what} ≤ {target:e}");
+    if let Some(r) = &choice.reference {
+        say!("  reference    {r}");
+    }
+    let show = |c: &choose::Candidate| {
+        format!(
+            "{} at h = {}: {what} {:.2e}, {} ({:.0} ns per unit of time)",
+            c.method,
+            c.h,
+            c.value,
+            human_duration(std::time::Duration::from_secs_f64(c.seconds)),
+            c.seconds * 1e9 / scene.duration
+        )
+    };
+    say!("  chosen       {}", show(best));
+    match &choice.runner_up {
+        Some(r) => say!("  runner-up    {}", show(r)),
+        None => say!("  runner-up    (no other method met the target)"),
+    }
+    say!(
+        "  searched     {} runs{}",
+        choice.runs,
+        if choice.truncated {
+            " (budget exhausted before the finest steps)"
+        } else {
+            ""
+        }
+    );
+    if let Some(w) = write {
+        let text = match scene_path {
+            Some(p) => std::fs::read_to_string(p).map_err(|source| SimError::Read {
+                path: p.to_path_buf(),
+                source,
+            })?,
+            None => scene::DEFAULT_SCENE.to_string(),
+        };
+        let chosen_text = choose::scene_with(&text, best, scene.duration)?;
+        output::write_atomic(&w, &chosen_text)?;
+        say!("  scene        {}", w.display());
+    }
+    Ok(())
+}
+
 /// The shard of a Slurm job-array task: `SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN` of
 /// `SLURM_ARRAY_TASK_COUNT` (`None` outside a job array; an error naming the variable when one is
 /// set but not a valid shard).
@@ -574,6 +721,29 @@ fn main() -> ExitCode {
             overrides,
         }) => cmd_sweep(&scene, out, shard, threads, count, seed, overrides),
         Some(Command::Merge { shards, out }) => cmd_merge(&shards, &out),
+        Some(Command::Choose {
+            scene,
+            target,
+            metric,
+            horizon,
+            budget,
+            levels,
+            write,
+            mut overrides,
+        }) => {
+            if horizon.is_some() {
+                overrides.duration = horizon;
+            }
+            cmd_choose(
+                scene.as_deref(),
+                target,
+                metric,
+                budget,
+                levels,
+                write,
+                overrides,
+            )
+        }
         Some(Command::DefaultScene) => {
             {
                 use std::io::Write as _;

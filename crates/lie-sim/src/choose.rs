@@ -1,0 +1,235 @@
+//! `lie-sim choose`: the cheapest method and step that meets an accuracy target on the user's own
+//! scene, measured, not guessed.
+//!
+//! It runs the candidates of [`crate::trade::candidates`] breadth first over a ladder of steps
+//! h₀, h₀/2, …, h₀/2^{L−1} (the exact flow also in one step to T): every method at the coarsest
+//! step, then every method at the next, so that a budget cut stops at an equally explored ladder,
+//! not in the middle of one slow method's fine steps. A method that met the target is not run at
+//! finer steps (they only cost more); one that failed is not run again. The measure is
+//!
+//! - `error`: the error at T against the reference of [`crate::trade::reference`] (the exact flow
+//!   on free-body scenes), or
+//! - `energy`: the maximum relative energy error over the run (no reference needed),
+//!
+//! and the cost the stepping time of the whole run. The choice is the cheapest run meeting the
+//! target, the runner-up the cheapest run of another method; both are reported with their cost
+//! and measured error. When nothing meets the target within the budget, it says so, with the best
+//! value reached.
+
+use crate::error::SimError;
+use crate::scene::{Method, MethodSpec, Scene};
+use crate::sim::build;
+use crate::trade::{candidates, reference, timed_run};
+use std::time::{Duration, Instant};
+
+/// What is measured against the target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Metric {
+    /// The error at T against the reference.
+    Error,
+    /// The maximum relative energy error over the run.
+    Energy,
+}
+
+/// One measured run.
+#[derive(Debug, Clone)]
+pub struct Candidate {
+    /// The method.
+    pub method: MethodSpec,
+    /// Its step.
+    pub h: f64,
+    /// Stepping time of the whole run.
+    pub seconds: f64,
+    /// The measured value of the metric.
+    pub value: f64,
+}
+
+/// The outcome of [`choose`].
+#[derive(Debug, Clone)]
+pub struct Choice {
+    /// The cheapest run meeting the target, if any.
+    pub best: Option<Candidate>,
+    /// The cheapest run of another method meeting the target.
+    pub runner_up: Option<Candidate>,
+    /// The run with the smallest value of the metric (what was reached).
+    pub most_accurate: Option<Candidate>,
+    /// Runs measured.
+    pub runs: usize,
+    /// Whether the budget stopped the search before the ladder was explored.
+    pub truncated: bool,
+    /// How the reference was made (error metric only).
+    pub reference: Option<String>,
+}
+
+/// Runs the bounded search (see the module page). Errors: a target or budget that is not finite
+/// and positive, and whatever stops the reference.
+pub fn choose(
+    scene: &Scene,
+    target: f64,
+    metric: Metric,
+    levels: usize,
+    budget: Duration,
+) -> Result<Choice, SimError> {
+    if !(target.is_finite() && target > 0.0) {
+        return Err(SimError::Invalid {
+            path: scene.source.clone(),
+            field: "--target".into(),
+            message: format!("must be finite and positive, got {target}"),
+        });
+    }
+    let deadline = Instant::now() + budget;
+    let ladder: Vec<f64> = (0..levels)
+        .map(|k| scene.step / f64::powi(2.0, k as i32))
+        .collect();
+    let h_min = ladder.last().copied().unwrap_or(scene.step);
+    let reference = match metric {
+        Metric::Error => Some(reference(scene, h_min)?),
+        Metric::Energy => None,
+    };
+    let methods = candidates();
+    let mut done = vec![false; methods.len()];
+    let mut rows: Vec<Candidate> = Vec::new();
+    let mut truncated = false;
+    // The exact flow's one step to T comes first: it costs one step.
+    let steps = std::iter::once(scene.duration).chain(ladder.iter().copied());
+    'ladder: for (level, h) in steps.enumerate() {
+        for (k, m) in methods.iter().enumerate() {
+            if done[k] || (level == 0 && m.method != Method::Exact) {
+                continue;
+            }
+            if Instant::now() > deadline {
+                truncated = true;
+                break 'ladder;
+            }
+            let mut sim = match build(&scene.system, m, scene.reconstruct, &scene.solver) {
+                Ok(s) => s,
+                Err(_) => {
+                    done[k] = true; // not available or not applicable to this system
+                    continue;
+                }
+            };
+            let Ok(run) = timed_run(sim.as_mut(), scene.duration, h) else {
+                done[k] = true; // a failed step: finer steps of a failing method are not tried
+                continue;
+            };
+            let value = match &reference {
+                Some(r) => run.state.error(&r.state),
+                None => run.max_energy_error,
+            };
+            if !value.is_finite() {
+                done[k] = true;
+                continue;
+            }
+            done[k] = value <= target;
+            rows.push(Candidate {
+                method: m.clone(),
+                h,
+                seconds: run.stepping.as_secs_f64(),
+                value,
+            });
+        }
+    }
+    if metric == Metric::Energy {
+        // The trade samples the energy every few steps; a chosen run must meet the target at
+        // every step, so the runs that met it are checked step by step (one run each, cheapest
+        // first) and dropped if a sample between the trade's missed a peak.
+        rows.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
+        for r in rows.iter_mut().filter(|r| r.value <= target) {
+            r.value = energy_error_every_step(scene, &r.method, r.h)?;
+        }
+    }
+    let cheapest = |exclude: Option<&MethodSpec>| {
+        rows.iter()
+            .filter(|r| r.value <= target && Some(&r.method) != exclude)
+            .min_by(|a, b| a.seconds.total_cmp(&b.seconds))
+            .cloned()
+    };
+    let best = cheapest(None);
+    let runner_up = best.as_ref().and_then(|b| cheapest(Some(&b.method)));
+    let most_accurate = rows
+        .iter()
+        .min_by(|a, b| a.value.total_cmp(&b.value))
+        .cloned();
+    Ok(Choice {
+        best,
+        runner_up,
+        most_accurate,
+        runs: rows.len(),
+        truncated,
+        reference: reference.map(|r| {
+            format!(
+                "{} (estimated error {:.1e})",
+                r.description, r.estimated_error
+            )
+        }),
+    })
+}
+
+/// max_k |E_k − E₀|/|E₀| over every step of the scene run with `method` at step h (∞ if a step
+/// fails).
+fn energy_error_every_step(scene: &Scene, method: &MethodSpec, h: f64) -> Result<f64, SimError> {
+    let mut sim = build(&scene.system, method, scene.reconstruct, &scene.solver)?;
+    let n = crate::scene::steps_for(scene.duration, h);
+    let h_last = scene.duration - (n - 1) as f64 * h;
+    let e0 = sim.energy();
+    let mut worst = 0.0f64;
+    for k in 0..n {
+        if sim.step(if k + 1 == n { h_last } else { h }).is_err() {
+            return Ok(f64::INFINITY);
+        }
+        worst = worst.max(crate::run::relative_error(sim.energy(), e0));
+    }
+    Ok(worst)
+}
+
+/// The scene text with its `[integrator]` set to the chosen method, step and the duration the
+/// choice was measured over (the other keys of the table kept: reconstruct, solver options).
+pub fn scene_with(text: &str, chosen: &Candidate, duration: f64) -> Result<String, SimError> {
+    let mut doc: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| SimError::Choose {
+            message: format!("cannot re-read the scene to write it: {e}"),
+        })?;
+    let it = doc
+        .entry("integrator")
+        .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+    let Some(it) = it.as_table_mut() else {
+        return Err(SimError::Choose {
+            message: "the scene's [integrator] is not a table".into(),
+        });
+    };
+    for key in [
+        "method",
+        "tau",
+        "theta",
+        "composition",
+        "splitting",
+        "step",
+        "duration",
+    ] {
+        it.remove(key);
+    }
+    let m = &chosen.method;
+    it.insert("method".into(), m.method.name().into());
+    if let Some(t) = m.tau {
+        it.insert("tau".into(), t.name().into());
+    }
+    if let Some(th) = m.theta {
+        it.insert("theta".into(), th.into());
+    }
+    if let Some(c) = &m.composition {
+        it.insert("composition".into(), c.name().into());
+    }
+    if let Some(s) = &m.splitting {
+        it.insert("splitting".into(), s.name().into());
+    }
+    it.insert("step".into(), chosen.h.into());
+    it.insert("duration".into(), duration.into());
+    Ok(format!(
+        "# Chosen by `lie-sim choose`: {m} at h = {}.\n{}",
+        chosen.h,
+        toml::to_string(&doc).map_err(|e| SimError::Choose {
+            message: format!("cannot write the chosen scene: {e}"),
+        })?
+    ))
+}
