@@ -104,8 +104,11 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> StateSnapshot for LiePoisson<G, T, S>
         self.reset(t, mu, g)
     }
     fn set_time(&mut self, t: f64) -> Result<(), IntegratorError> {
-        let (_, mu, g) = self.snapshot();
-        self.reset(t, mu, g)
+        if !t.is_finite() {
+            return Err(IntegratorError::NonFinite { what: "time t" });
+        }
+        self.set_time_only(t);
+        Ok(())
     }
 }
 

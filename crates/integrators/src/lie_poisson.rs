@@ -65,6 +65,9 @@ pub struct LiePoisson<G: LieGroup, T: Tau<G>, S: System<G>> {
     config: SolverConfig,
     t: f64,
     mu: G::Algebra,
+    /// The rounding error of μ carried to the next step (compensated summation: μ + mu_err is
+    /// the sum of the increments to O(ε²)), so that |μ|² does not random-walk either.
+    mu_err: G::Algebra,
     g: Option<G>,
     iterations: usize,
     _tau: PhantomData<T>,
@@ -123,6 +126,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
             theta,
             config: SolverConfig::default(),
             t: 0.0,
+            mu_err: G::Algebra::zeros(G::dim()),
             mu: mu0,
             g: g0,
             iterations: 0,
@@ -142,8 +146,13 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
         check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
         self.t = t;
         self.mu = mu;
+        self.mu_err = G::Algebra::zeros(G::dim());
         self.g = g;
         Ok(())
+    }
+    /// Sets the time alone (the compensation of μ kept).
+    pub(crate) fn set_time_only(&mut self, t: f64) {
+        self.t = t;
     }
     /// The system.
     pub fn system(&self) -> &S {
@@ -162,28 +171,37 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
         self.iterations
     }
 
-    /// For a trial ξ: τ(θξ) (`None` for θ = 0, where it is e, and for θ = ½, where it is
-    /// τ((1−θ)ξ)), τ((1−θ)ξ), ν = Ad*_{τ(θξ)} μ_k + h F(g_k τ(θξ)) and μ_{k+1} = Ad*_{τ((1−θ)ξ)} ν.
+    /// For a trial ξ: ν = Ad*_{τ(θξ)} μ_k + h F(g_k τ(θξ)) and μ_{k+1} = Ad*_{τ((1−θ)ξ)} ν, in
+    /// increment form: with δ_ζ(x) := (Ad*_{τ(ζ)} − I)x (`Tau::tau_coadjoint_increment`, linear in
+    /// x, computed from ζ), `Δν = δ_{θξ}(μ_k) + h F` and
+    /// `μ_{k+1} = μ_k + (Δν + δ_{(1−θ)ξ}(μ_k) + δ_{(1−θ)ξ}(Δν))`: μ_k is rounded once per step, so
+    /// |μ|² follows a random walk of roundings instead of drifting with the rounding of τ's
+    /// entries `1 − O(|ξ|²)` at small steps. τ itself is not formed.
     #[inline]
     fn update(&self, h: f64, xi: &G::Algebra) -> Update<G> {
         let th = self.theta;
         let b = 1.0 - th;
-        let tb: G = T::tau(&xi.scale(b));
-        let ta: Option<G> = (th != 0.0 && th != b).then(|| T::tau(&xi.scale(th)));
-        let ta_ref = if th == b { Some(&tb) } else { ta.as_ref() };
-        let mut nu = match ta_ref {
-            Some(ta) => ta.coadjoint_apply(&self.mu),
-            None => self.mu.clone(),
+        let mut dnu = if th == 0.0 {
+            G::Algebra::zeros(G::dim())
+        } else {
+            T::tau_coadjoint_increment(&xi.scale(th), &self.mu)
         };
         // The force at ḡ = g_k τ(θξ); ḡ is formed only for a system with a potential.
         if let Some(gk) = self.g.as_ref().filter(|_| self.system.has_potential()) {
-            let gbar = ta_ref.map(|ta| gk.compose(ta));
+            let gbar = (th != 0.0).then(|| T::compose_tau(gk, &xi.scale(th)));
             if let Some(f) = force(&self.system, Some(gbar.as_ref().unwrap_or(gk))) {
-                nu = nu.axpy(h, &f);
+                dnu = dnu.axpy(h, &f);
             }
         }
-        let mu1 = tb.coadjoint_apply(&nu);
-        Update { ta, tb, nu, mu1 }
+        let xb = xi.scale(b);
+        let dmu = dnu
+            .add(&T::tau_coadjoint_increment(&xb, &self.mu))
+            .add(&T::tau_coadjoint_increment(&xb, &dnu));
+        Update {
+            nu: self.mu.add(&dnu),
+            mu1: self.mu.add(&dmu),
+            dmu,
+        }
     }
 
     /// For a trial ξ: the [`Self::update`] and
@@ -247,9 +265,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
             m1.compose(&dtb).scale(b)
         } else {
             // Ad*_{τ((1−θ)ξ)} M(ν) = (Ad_{τ((1−θ)ξ)})ᵀ M(ν).
-            let mnu = ev
-                .up
-                .tb
+            let mnu = T::tau(&xb)
                 .adjoint()
                 .transpose()
                 .compose(&ad_dual_operator::<G>(&ev.up.nu));
@@ -279,10 +295,10 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
 
 /// The new state's ingredients at a trial ξ (see [`LiePoisson::update`]).
 struct Update<G: LieGroup> {
-    ta: Option<G>,
-    tb: G,
     nu: G::Algebra,
     mu1: G::Algebra,
+    /// μ_{k+1} − μ_k before rounding.
+    dmu: G::Algebra,
 }
 
 /// The quantities of one evaluation of the step map at a trial ξ, shared by the residual and
@@ -306,26 +322,34 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
         }
         // The new state at the solution: from the solver's last evaluation when that was at
         // exactly this ξ, else evaluated again (bitwise the same either way).
-        let Update { ta, tb, mu1, .. } = match solution.evaluation {
+        let Update { dmu, .. } = match solution.evaluation {
             Some(ev) => ev.up,
             None => self.update(h, &xi),
         };
-        if !mu1.is_finite() {
+        // μ_{k+1} = μ_k + (Δμ + carried error), by TwoSum (Knuth): the new rounding error is kept
+        // exactly for the next step (compensated summation, Vilmart 2008).
+        let (a, b) = (&self.mu, dmu.add(&self.mu_err));
+        let mu1 = a.add(&b);
+        let bb = mu1.sub(a);
+        let err = a.sub(&mu1.sub(&bb)).add(&b.sub(&bb));
+        if !mu1.is_finite() || !err.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "momentum μ_{k+1}",
             });
         }
         let g1 = match self.g.as_ref() {
             Some(gk) => {
-                // g_{k+1} = g_k τ(θξ) τ((1−θ)ξ), from the final update (for θ = ½, τ(θξ) = τ((1−θ)ξ)).
+                // g_{k+1} = g_k τ(θξ) τ((1−θ)ξ), each factor in the increment form of
+                // `Tau::compose_tau` (g rounded once per factor).
                 let th = self.theta;
-                let g1 = match ta {
-                    Some(ta) => gk.compose(&ta).compose(&tb),
-                    None if th == 1.0 - th => gk.compose(&tb).compose(&tb),
-                    None => gk.compose(&tb),
-                }
-                // Keep g on the group to round-off over any number of steps.
-                .normalize();
+                let ga = if th == 0.0 {
+                    gk.clone()
+                } else {
+                    T::compose_tau(gk, &xi.scale(th))
+                };
+                let g1 = T::compose_tau(&ga, &xi.scale(1.0 - th))
+                    // Keep g on the group to round-off over any number of steps.
+                    .normalize();
                 if !g1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration g_{k+1}",
@@ -336,6 +360,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
             None => None,
         };
         self.mu = mu1;
+        self.mu_err = err;
         self.g = g1;
         self.t += h;
         self.iterations = solution.iterations;

@@ -106,6 +106,18 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
             .try_inverse()
             .unwrap_or_else(|| nan_operator::<Self>())
     }
+    /// The increment `(Ad*_{exp ξ} − I) μ`, linear in μ. The provided form is
+    /// `Ad*_{exp ξ} μ − μ`; groups override it with a form computed from ξ directly, whose relative
+    /// accuracy does not depend on the rounding of the entries `1 − O(|ξ|²)` of exp ξ, so that the
+    /// Lie–Poisson step can add it to μ once and |μ|² does not drift at small steps.
+    fn exp_coadjoint_increment(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
+        Self::exp(xi).coadjoint_apply(mu).sub(mu)
+    }
+    /// `g exp ξ`. The provided form composes with exp ξ; groups override it with the increment
+    /// form `g + g (exp ξ − I)` (see [`LieGroup::exp_coadjoint_increment`]).
+    fn exp_compose(g: &Self, xi: &Self::Algebra) -> Self {
+        g.compose(&Self::exp(xi))
+    }
     /// `d^{L*}exp_ξ μ = (d^L exp_ξ)ᵀ μ`. The provided form builds d^L exp_ξ; groups override it
     /// with a closed form that skips the operator (the Lie–Poisson step applies it every
     /// iteration).

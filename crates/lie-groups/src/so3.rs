@@ -105,6 +105,34 @@ pub(crate) fn rodrigues_coeffs(t2: f64) -> (f64, f64, f64) {
     }
 }
 
+/// `(Rᵀ − I)μ` for `R = I + a ω̂ + b ω̂²`: `a (μ × ω) + b ω × (ω × μ)` (ω̂ᵀ = −ω̂, (ω̂²)ᵀ = ω̂²), of
+/// size O(|ω||μ|) and with its own relative accuracy.
+#[inline]
+fn coadjoint_increment(w: &Vector3<f64>, mu: &Vector3<f64>, a: f64, b: f64) -> Vector3<f64> {
+    let wm = w.cross(mu);
+    w.cross(&wm) * b - wm * a
+}
+
+/// `a ω̂ + b ω̂²` (the rotation `I + a ω̂ + b ω̂²` less the identity), entry by entry as in
+/// [`rodrigues_matrix`].
+#[inline]
+fn rodrigues_increment(w: &Vector3<f64>, a: f64, b: f64) -> Matrix3<f64> {
+    let (x, y, z) = (w.x, w.y, w.z);
+    let (xy, xz, yz) = (b * (x * y), b * (x * z), b * (y * z));
+    let (ax, ay, az) = (a * x, a * y, a * z);
+    Matrix3::new(
+        -b * (y * y + z * z),
+        xy - az,
+        xz + ay,
+        xy + az,
+        -b * (x * x + z * z),
+        yz - ax,
+        xz - ay,
+        yz + ax,
+        -b * (x * x + y * y),
+    )
+}
+
 /// `I + a ω̂ + b ω̂²`, written entry by entry with `ω̂² = ωωᵀ − θ² I` whose diagonal is taken as
 /// `−(ω_j² + ω_k²)` (no cancellation): the same roundings as the matrix expression, without the
 /// 27-multiplication product ω̂ ω̂ and the temporaries.
@@ -590,6 +618,21 @@ impl LieGroup for So3 {
     fn coadjoint_apply(&self, mu: &Vector3<f64>) -> Vector3<f64> {
         self.r.tr_mul(mu)
     }
+    /// `(Ad*_{exp ω} − I) μ = a (μ × ω) + b ω × (ω × μ)` (exp ω = I + a ω̂ + b ω̂², a = sin θ/θ,
+    /// b = (1 − cos θ)/θ²), computed from ω.
+    #[inline]
+    fn exp_coadjoint_increment(w: &Vector3<f64>, mu: &Vector3<f64>) -> Vector3<f64> {
+        let (a, b) = exp_coeffs(w.norm_squared());
+        coadjoint_increment(w, mu, a, b)
+    }
+    /// `R exp ω = R + R (a ω̂ + b ω̂²)`: the increment formed without the identity, R rounded once.
+    #[inline]
+    fn exp_compose(g: &Self, w: &Vector3<f64>) -> Self {
+        let (a, b) = exp_coeffs(w.norm_squared());
+        Self {
+            r: g.r + g.r * rodrigues_increment(w, a, b),
+        }
+    }
     /// `[ξ, η] = ξ × η`.
     #[inline]
     fn bracket(xi: &Vector3<f64>, eta: &Vector3<f64>) -> Vector3<f64> {
@@ -665,6 +708,20 @@ impl CayleyGroup for So3 {
         let a = 4.0 / (4.0 + w.norm_squared());
         Self {
             r: rodrigues_matrix(w, a, 0.5 * a),
+        }
+    }
+    /// `(Ad*_{cay ω} − I) μ = a (μ × ω) + (a/2) ω × (ω × μ)`, a = 4/(4 + |ω|²).
+    #[inline]
+    fn cay_coadjoint_increment(w: &Vector3<f64>, mu: &Vector3<f64>) -> Vector3<f64> {
+        let a = 4.0 / (4.0 + w.norm_squared());
+        coadjoint_increment(w, mu, a, 0.5 * a)
+    }
+    /// `R cay ω = R + R (a ω̂ + (a/2) ω̂²)`, the increment form of [`LieGroup::exp_compose`].
+    #[inline]
+    fn cay_compose(g: &Self, w: &Vector3<f64>) -> Self {
+        let a = 4.0 / (4.0 + w.norm_squared());
+        Self {
+            r: g.r + g.r * rodrigues_increment(w, a, 0.5 * a),
         }
     }
     /// `cay⁻¹(R) = 2 vee(R − Rᵀ)/(1 + tr R)` (the closed form of `2 (R − I)(R + I)⁻¹`); an error

@@ -43,6 +43,17 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     fn dtau_right_inv(xi: &G::Algebra) -> G::Operator {
         Self::dtau_left_inv(&xi.neg())
     }
+    /// The increment `(Ad*_{τ(ξ)} − I) μ`, linear in μ, computed from ξ directly where the group
+    /// has a closed form (see [`LieGroup::exp_coadjoint_increment`]; the provided form builds
+    /// τ(ξ)).
+    fn tau_coadjoint_increment(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        Self::tau(xi).coadjoint_apply(mu).sub(mu)
+    }
+    /// `g τ(ξ)`, in the increment form `g + g (τ(ξ) − I)` where the group has one
+    /// ([`LieGroup::exp_compose`]).
+    fn compose_tau(g: &G, xi: &G::Algebra) -> G {
+        g.compose(&Self::tau(xi))
+    }
     /// `d^{L*} τ_ξ μ = (d^L τ_ξ)ᵀ μ`.
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         Self::dtau_left(xi).apply_transpose(mu)
@@ -87,6 +98,14 @@ impl<G: LieGroup> Tau<G> for ExpMap {
         G::dexp_left_inv(xi)
     }
     #[inline]
+    fn tau_coadjoint_increment(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::exp_coadjoint_increment(xi, mu)
+    }
+    #[inline]
+    fn compose_tau(g: &G, xi: &G::Algebra) -> G {
+        G::exp_compose(g, xi)
+    }
+    #[inline]
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         G::dexp_left_dual_apply(xi, mu)
     }
@@ -117,6 +136,14 @@ pub trait CayleyGroup: LieGroup {
     fn dcay_left(xi: &Self::Algebra) -> Self::Operator;
     /// `(d^L cay_ξ)⁻¹`.
     fn dcay_left_inv(xi: &Self::Algebra) -> Self::Operator;
+    /// `(Ad*_{cay ξ} − I) μ`; groups override it as for [`LieGroup::exp_coadjoint_increment`].
+    fn cay_coadjoint_increment(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
+        Self::cay(xi).coadjoint_apply(mu).sub(mu)
+    }
+    /// `g cay ξ`; groups override it with the increment form of [`LieGroup::exp_compose`].
+    fn cay_compose(g: &Self, xi: &Self::Algebra) -> Self {
+        g.compose(&Self::cay(xi))
+    }
     /// `d^{L*}cay_ξ μ = (d^L cay_ξ)ᵀ μ`. The provided form builds d^L cay_ξ; groups override it
     /// with a closed form that skips the operator.
     fn dcay_left_dual_apply(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
@@ -154,6 +181,14 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     #[inline]
     fn dtau_left_inv(xi: &G::Algebra) -> G::Operator {
         G::dcay_left_inv(xi)
+    }
+    #[inline]
+    fn tau_coadjoint_increment(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::cay_coadjoint_increment(xi, mu)
+    }
+    #[inline]
+    fn compose_tau(g: &G, xi: &G::Algebra) -> G {
+        G::cay_compose(g, xi)
     }
     #[inline]
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
