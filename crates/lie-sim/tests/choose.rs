@@ -1,33 +1,10 @@
 //! `lie-sim choose`: the chosen method, re-run from the scene it writes, meets the target; a target
 //! nothing meets is said so; bad input is one line and no file.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
-const BIN: &str = env!("CARGO_BIN_EXE_lie-sim");
-
-fn temp_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("lie-sim-choose-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn lie_sim(args: &[&str], cwd: &Path) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn scenes() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes")
-}
+use common::*;
+use std::path::Path;
 
 /// The last CSV row of a trajectory, as numbers.
 fn last_row(path: &Path) -> Vec<f64> {
@@ -46,7 +23,7 @@ fn last_row(path: &Path) -> Vec<f64> {
 #[test]
 fn the_chosen_method_meets_the_target_when_re_run() {
     let dir = temp_dir("meets");
-    let scene = scenes().join("free-rigid-body.toml");
+    let scene = scenes_dir().join("free-rigid-body.toml");
     let o = lie_sim(
         &[
             "choose",
@@ -89,7 +66,7 @@ fn the_chosen_method_meets_the_target_when_re_run() {
 #[test]
 fn the_chosen_energy_method_meets_the_target_at_every_step() {
     let dir = temp_dir("energy");
-    let scene = scenes().join("heavy-top.toml");
+    let scene = scenes_dir().join("heavy-top.toml");
     let o = lie_sim(
         &[
             "choose",
@@ -123,7 +100,7 @@ fn the_chosen_energy_method_meets_the_target_at_every_step() {
 #[test]
 fn a_target_nothing_meets_is_said_so() {
     let dir = temp_dir("none");
-    let scene = scenes().join("heavy-top.toml");
+    let scene = scenes_dir().join("heavy-top.toml");
     let o = lie_sim(
         &[
             "choose",

@@ -3,30 +3,12 @@
 //! interrupted run (SIGINT, SIGTERM) or a killed one. Work bounded by what was asked: limits
 //! checked up front, a shard costing only its own members.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+
+use common::*;
+use std::path::Path;
+use std::process::Command;
 use std::time::{Duration, Instant};
-
-const BIN: &str = env!("CARGO_BIN_EXE_lie-sim");
-
-fn temp_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("lie-sim-outputs-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn lie_sim(args: &[&str], cwd: &Path) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 /// Every file under `dir`, sorted, as names relative to it.
 fn files(dir: &Path) -> Vec<String> {
@@ -263,7 +245,7 @@ fn temporary_files_of_dead_runs_are_cleaned_by_the_next_run() {
 #[test]
 fn a_small_shard_of_a_huge_sweep_costs_only_its_own_members() {
     let dir = temp_dir("huge-sweep");
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/sweep.toml");
+    let scene = scenes_dir().join("sweep.toml");
     let start = Instant::now();
     let o = lie_sim(
         &[
@@ -360,7 +342,7 @@ fn work_beyond_the_limits_is_refused_up_front() {
         ],
         &["trade", "integrator steps"],
     );
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/sweep.toml");
+    let scene = scenes_dir().join("sweep.toml");
     assert_refused(
         &dir,
         &[
@@ -396,7 +378,7 @@ fn quiet_prints_nothing() {
 #[test]
 fn sweep_shard_defaults_from_a_slurm_job_array() {
     let dir = temp_dir("slurm");
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes/sweep.toml");
+    let scene = scenes_dir().join("sweep.toml");
     let run = |id: &str| {
         Command::new(BIN)
             .args([
