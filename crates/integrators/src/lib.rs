@@ -67,6 +67,7 @@ pub mod euler_poincare;
 pub mod exact;
 mod integrator;
 pub mod lie_poisson;
+pub mod modified;
 pub mod solver;
 pub mod splitting;
 mod system;

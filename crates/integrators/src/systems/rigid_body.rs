@@ -41,7 +41,13 @@ impl RigidBody {
             (Matrix3::identity(), inertia.diagonal())
         } else {
             let eig = inertia.symmetric_eigen();
-            (eig.eigenvectors, eig.eigenvalues)
+            let mut axes = eig.eigenvectors;
+            // A right-handed frame (det = +1): the exact flow works in principal coordinates,
+            // where an improper frame would reverse Π × Ω.
+            if axes.determinant() < 0.0 {
+                axes.column_mut(2).neg_mut();
+            }
+            (axes, eig.eigenvalues)
         };
         Ok(Self {
             inner,
@@ -51,8 +57,8 @@ impl RigidBody {
             diagonal,
         })
     }
-    /// The principal axes aᵢ of 𝕀 (the columns) and the principal moments Iᵢ, with
-    /// 𝕀 = Σ Iᵢ aᵢ aᵢᵀ; for a diagonal 𝕀 exactly (I, diag 𝕀).
+    /// The principal axes aᵢ of 𝕀 (the columns, a right-handed orthonormal frame: det = +1) and
+    /// the principal moments Iᵢ, with 𝕀 = Σ Iᵢ aᵢ aᵢᵀ; for a diagonal 𝕀 exactly (I, diag 𝕀).
     pub fn principal_frame(&self) -> (&Matrix3<f64>, &Vector3<f64>) {
         (&self.axes, &self.moments)
     }
