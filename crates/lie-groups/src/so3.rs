@@ -105,6 +105,20 @@ pub(crate) fn rodrigues_coeffs(t2: f64) -> (f64, f64, f64) {
     }
 }
 
+/// `I + c₁ n̂ + c₂ n̂²` for `ω = θ n` too long for θ² to be a double: n and θ from ω scaled by its
+/// largest entry, `(c₁, c₂) = coeffs(θ)`.
+#[cold]
+fn huge_rotation(w: &Vector3<f64>, coeffs: impl Fn(f64) -> (f64, f64)) -> So3 {
+    let m = w.amax();
+    let u = w / m;
+    let t = m * u.norm();
+    let n = u / u.norm();
+    let (c1, c2) = coeffs(t);
+    So3 {
+        r: rodrigues_matrix(&n, c1, c2),
+    }
+}
+
 /// `(Rᵀ − I)μ` for `R = I + a ω̂ + b ω̂²`: `a (μ × ω) + b ω × (ω × μ)` (ω̂ᵀ = −ω̂, (ω̂²)ᵀ = ω̂²), of
 /// size O(|ω||μ|) and with its own relative accuracy.
 #[inline]
@@ -506,9 +520,21 @@ impl LieGroup for So3 {
     /// division, no libm call), for θ ≤ π from the same kernels on the reduced angle, beyond π
     /// from libm, and below θ = 0.1 from their Taylor series. The matrix is assembled entry by
     /// entry with ω̂² = ωωᵀ − θ²I (`rodrigues_matrix`).
+    ///
+    /// Beyond |ω| ≈ 1.3·10¹⁵⁴, where θ² overflows, the rotation is taken about the unit axis with
+    /// `sin θ`, `1 − cos θ` of the (finite) θ (`huge_rotation`): a rotation, never NaN — though
+    /// at such angles the ulp of θ exceeds 2π, so any angle about that axis is as good. Non-finite
+    /// ω gives a non-finite matrix (the integrators refuse it with an error).
     #[inline]
     fn exp(w: &Vector3<f64>) -> Self {
-        let (a, b) = exp_coeffs(w.norm_squared());
+        let t2 = w.norm_squared();
+        if !t2.is_finite() && w.iter().all(|x| x.is_finite()) {
+            return huge_rotation(w, |t| {
+                let (s, c) = t.sin_cos();
+                (s, 1.0 - c)
+            });
+        }
+        let (a, b) = exp_coeffs(t2);
         Self {
             r: rodrigues_matrix(w, a, b),
         }
@@ -705,7 +731,12 @@ impl CayleyGroup for So3 {
     /// `cay(ω) = (I − ω̂/2)⁻¹(I + ω̂/2) = I + 4/(4 + θ²) (ω̂ + ω̂²/2)`.
     #[inline]
     fn cay(w: &Vector3<f64>) -> Self {
-        let a = 4.0 / (4.0 + w.norm_squared());
+        let t2 = w.norm_squared();
+        if !t2.is_finite() && w.iter().all(|x| x.is_finite()) {
+            // cay(sn) = I + (4s/(4 + s²)) n̂ + (2s²/(4 + s²)) n̂² → I + 2n̂² (the half turn) as s → ∞.
+            return huge_rotation(w, |s| (4.0 / s, 2.0 / (1.0 + 4.0 / (s * s))));
+        }
+        let a = 4.0 / (4.0 + t2);
         Self {
             r: rodrigues_matrix(w, a, 0.5 * a),
         }

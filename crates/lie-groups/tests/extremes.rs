@@ -658,3 +658,32 @@ fn so_n_log_is_relatively_accurate_down_to_subnormal_angles() {
         assert!(e < 4e-16 * size, "|ω| = {size:e}: {e:e}");
     }
 }
+
+/// exp and Cayley on SO(3) beyond |ω| ≈ 1.3e154, where θ² overflows: a rotation about the axis
+/// (orthogonal to round-off, det 1, the axis fixed), never NaN; Cayley tends to the half turn
+/// I + 2n̂² about the axis. (Before, both returned NaN matrices without an error.)
+#[test]
+fn so3_exp_and_cayley_of_huge_vectors_are_rotations_about_the_axis() {
+    let n = Vector3::new(0.3, -0.5, 0.8).normalize();
+    for s in [2e154, 1e200, 1e300, f64::MAX / 4.0] {
+        let w = n * s;
+        for (name, r) in [("exp", So3::exp(&w)), ("cay", So3::cay(&w))] {
+            let m = r.as_matrix();
+            assert!(m.iter().all(|x| x.is_finite()), "{name} at {s:e}");
+            assert_small(
+                "RᵀR = I",
+                (m.transpose() * m - nalgebra::Matrix3::identity()).amax(),
+                1e-15,
+            );
+            assert_small("det R = 1", (m.determinant() - 1.0).abs(), 1e-15);
+            assert_small("R n = n", (m * n - n).amax(), 1e-15);
+        }
+        let half_turn = nalgebra::Matrix3::identity() + n.cross_matrix() * n.cross_matrix() * 2.0;
+        assert_small(
+            "cay → half turn",
+            (So3::cay(&w).as_matrix() - half_turn).amax(),
+            1e-15,
+        );
+    }
+    assert!(!So3::exp(&Vector3::new(f64::NAN, 0.0, 0.0)).is_finite());
+}
