@@ -436,12 +436,17 @@ fn cmd_trade(
             None => say!("  {:<52} -", m.to_string()),
         }
     }
-    let mut methods: Vec<_> = report.inapplicable.iter().map(|m| m.method).collect();
-    methods.dedup();
-    for m in methods {
+    let mut reasons: Vec<String> = Vec::new();
+    for m in &report.inapplicable {
         if let Some(why) = scene::inapplicable(m, &scene.system) {
-            say!("not applicable: {m}: {why}");
+            let line = format!("not applicable: {}: {why}", m.method);
+            if !reasons.contains(&line) {
+                reasons.push(line);
+            }
         }
+    }
+    for line in reasons {
+        say!("{line}");
     }
     if !report.unavailable.is_empty() {
         let names: Vec<String> = report.unavailable.iter().map(|m| m.to_string()).collect();

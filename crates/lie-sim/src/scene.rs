@@ -28,6 +28,8 @@
 //! # max_iterations = 50
 //! # composition = "kahan-li-6"      # optional: compose the θ = ½ method to order 4, 6, 8, … (below)
 //! # splitting = "blanes-moan-4"     # kinetic-kick only: strang (default) | blanes-moan-4 | blanes-moan-6
+//! # modified = true                 # lie-poisson θ = 0.5 on the modified Hamiltonian: order 4
+//!                                   #   at the cost of order 2 (free-rigid-body)
 //!
 //! [output]
 //! stride = 10                       # write every 10th step (default 1); t = 0 and t = T always
@@ -248,9 +250,20 @@ pub struct MethodSpec {
     pub composition: Option<CompositionScheme>,
     /// The coefficients of `kinetic-kick` (Strang, Blanes–Moan 4 or 6).
     pub splitting: Option<SplittingScheme>,
+    /// Lie–Poisson θ = ½ on the modified Hamiltonian H − h²H₂ (order 4; free rigid body).
+    pub modified: bool,
 }
 
 impl MethodSpec {
+    /// The method's name for tables: its scene name, `modified-lie-poisson` for the modified
+    /// Hamiltonian.
+    pub fn method_label(&self) -> String {
+        if self.modified {
+            format!("modified-{}", self.method.name())
+        } else {
+            self.method.name().into()
+        }
+    }
     /// τ as a string for tables (`-` where it does not apply).
     pub fn tau_label(&self) -> String {
         self.tau.map_or_else(|| "-".into(), |t| t.name().into())
@@ -276,6 +289,7 @@ impl MethodSpec {
             theta: None,
             composition: None,
             splitting: None,
+            modified: false,
         }
     }
 }
@@ -284,6 +298,9 @@ impl fmt::Display for MethodSpec {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if let Some(c) = &self.composition {
             write!(f, "{} ∘ ", c.name())?;
+        }
+        if self.modified {
+            f.write_str("modified ")?;
         }
         write!(f, "{}", self.method)?;
         if let Some(s) = &self.splitting {
@@ -421,6 +438,8 @@ pub struct RawIntegrator {
     pub composition: Option<String>,
     /// Coefficients of `kinetic-kick`: `strang`, `blanes-moan-4` or `blanes-moan-6`.
     pub splitting: Option<String>,
+    /// `lie-poisson` with θ = 0.5 on the modified Hamiltonian (order 4, free rigid body).
+    pub modified: Option<bool>,
 }
 
 /// `[sweep]`: many initial momenta drawn around the scene's μ₀, for `lie-sim sweep`.
@@ -767,7 +786,7 @@ impl Scene {
         if stride == 0 {
             return Err(bad("output.stride", "must be at least 1, got 0".into()));
         }
-        if let Some(why) = inapplicable(method.method, &system) {
+        if let Some(why) = inapplicable(&method, &system) {
             return Err(bad("integrator.method", why));
         }
         let sweep = match &raw.sweep {
@@ -966,20 +985,38 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
             ))
         }
     };
+    let modified = it.modified.unwrap_or(false);
+    if modified && !(m == Method::LiePoisson && theta == Some(0.5) && composition.is_none()) {
+        return Err((
+            "integrator.modified".into(),
+            format!(
+                "the modified Hamiltonian is derived for lie-poisson with θ = 0.5 and no \
+                 composition (it is order 4 on its own), got {m}{}",
+                theta.map_or_else(String::new, |t| format!(" with θ = {t}"))
+            ),
+        ));
+    }
     Ok(MethodSpec {
         method: m,
         tau,
         theta,
         composition,
         splitting,
+        modified,
     })
 }
 
-/// Why `method` does not apply to `system` (`None` when it does): Euler–Arnold with a potential,
-/// a splitting of the SO(n) geodesic, the kinetic–kick off SO(3), the exact flow off the free
-/// body. The one place these rules live: the scene check and `sim::dispatch` both ask here.
-pub fn inapplicable(method: Method, system: &System) -> Option<String> {
-    match method {
+/// Why `spec` does not apply to `system` (`None` when it does): Euler–Arnold with a potential,
+/// a splitting of the SO(n) geodesic, the kinetic–kick off the rigid body, the exact flow or the
+/// modified Hamiltonian off the free body. The one place these rules live: the scene check and `sim::dispatch` both ask here.
+pub fn inapplicable(spec: &MethodSpec, system: &System) -> Option<String> {
+    if spec.modified && !matches!(system, System::FreeRigidBody(_)) {
+        return Some(
+            "the modified Hamiltonian (modified = true) is derived for the free rigid body only"
+                .into(),
+        );
+    }
+    match spec.method {
         Method::EulerArnold if system.has_potential() => {
             Some(euler_arnold_needs_kinetic(system.kind()))
         }

@@ -12,6 +12,7 @@ use crate::scene::{
 };
 use faer::{Col, Mat};
 use integrators::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
+use integrators::modified::ModifiedLiePoisson;
 use integrators::splitting::{KineticFlow, KineticKick, SplitSystem, Splitting, SplittingScheme};
 use integrators::systems::{
     GeneralizedRigidBody, HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, RigidBody,
@@ -136,7 +137,7 @@ pub fn dispatch<J: Job>(
         what: what(),
         message: e.to_string(),
     };
-    if let Some(why) = inapplicable(method.method, system) {
+    if let Some(why) = inapplicable(method, system) {
         return Err(SimError::Inapplicable { what: what(), why });
     }
     if method.method == Method::Rk4
@@ -423,13 +424,23 @@ impl Builder {
         }
     }
 
-    /// The free rigid body: every method, the exact flow and the kinetic–kick included.
+    /// The free rigid body: every method, the exact flow, the kinetic–kick and the modified
+    /// Lie–Poisson step included.
     fn make_rigid_body(
         &self,
         body: RigidBody,
         mu0: Vector3<f64>,
         g0: Option<So3>,
     ) -> Result<Boxed<So3>, IntegratorError> {
+        if self.method.modified {
+            let c = self.config;
+            return Ok(match self.method.tau {
+                Some(TauKind::Exp) => {
+                    Boxed::new(ModifiedLiePoisson::<ExpMap>::new(body, mu0, g0)?.with_solver(c))
+                }
+                _ => Boxed::new(ModifiedLiePoisson::<Cayley>::new(body, mu0, g0)?.with_solver(c)),
+            });
+        }
         match self.method.method {
             Method::Exact => Ok(Boxed::new(ExactFreeBody::new(body, mu0, g0)?)),
             Method::KineticKick => {

@@ -76,6 +76,7 @@ pub fn candidates() -> Vec<MethodSpec> {
                     theta: Some(theta),
                     composition: None,
                     splitting: None,
+                    modified: false,
                 });
             }
         }
@@ -88,8 +89,19 @@ pub fn candidates() -> Vec<MethodSpec> {
                 theta: Some(0.5),
                 composition: Some(scheme(name)),
                 splitting: None,
+                modified: false,
             });
         }
+    }
+    for tau in [TauKind::Exp, TauKind::Cayley] {
+        v.push(MethodSpec {
+            method: Method::LiePoisson,
+            tau: Some(tau),
+            theta: Some(0.5),
+            composition: None,
+            splitting: None,
+            modified: true,
+        });
     }
     v.push(MethodSpec::plain(Method::Splitting, None));
     for name in SPLITTING_COMPOSITIONS {
@@ -254,6 +266,7 @@ pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
         theta: Some(0.5),
         composition: Some(CompositionScheme::kahan_li_8()),
         splitting: None,
+        modified: false,
     };
     let fine = run(&m, h_ref)?;
     let coarse = run(&m, 2.0 * h_ref)?;
@@ -427,7 +440,7 @@ pub fn fitted_order(rows: &[&TradeRow], reference_error: f64) -> Option<f64> {
 /// Table header, fixed width.
 pub fn table_header() -> String {
     format!(
-        "{:<15} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11}",
+        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11}",
         "method", "tau", "theta", "composition", "h", "steps", "ns/step", "error(T)", "max|dE/E|"
     )
 }
@@ -435,8 +448,8 @@ pub fn table_header() -> String {
 /// One table line.
 pub fn table_line(r: &TradeRow) -> String {
     let head = format!(
-        "{:<15} {:>6} {:>5} {:>13} {:>10.3e}",
-        r.method.method.name(),
+        "{:<20} {:>6} {:>5} {:>13} {:>10.3e}",
+        r.method.method_label(),
         r.method.tau_label(),
         r.method.theta_label(),
         r.method.composition_label(),
@@ -460,7 +473,7 @@ pub fn to_csv(rows: &[TradeRow]) -> String {
         let _ = writeln!(
             s,
             "{},{},{},{},{},{},{},{},{},{},{}",
-            r.method.method.name(),
+            r.method.method_label(),
             r.method.tau_label(),
             r.method.theta_label(),
             r.method.composition_label(),
@@ -574,9 +587,9 @@ mod tests {
     #[test]
     fn candidates_cover_every_lie_method_tau_theta_the_compositions_the_splittings_and_the_baselines(
     ) {
-        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + splitting (plain, 3 compositions)
-        // + kinetic-kick × 3 schemes + exact + rk4 + rkmk4.
-        assert_eq!(candidates().len(), 34);
+        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + modified LP × 2 τ + splitting (plain,
+        // 3 compositions) + kinetic-kick × 3 schemes + exact + rk4 + rkmk4.
+        assert_eq!(candidates().len(), 36);
         let composed: Vec<_> = candidates()
             .into_iter()
             .filter(|m| m.composition.is_some())

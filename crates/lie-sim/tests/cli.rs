@@ -303,12 +303,13 @@ fn trade_writes_a_work_precision_table_and_plot() {
         lines.next().unwrap(),
         "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,failure"
     );
-    // (lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, 3 compositions × 2 τ, splitting
-    // and its 3 compositions, kinetic-kick × 3 coefficient sets, rk4, rkmk4) × 2 steps, and the
-    // exact flow in one step and at the 2 steps.
+    // (lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, 3 compositions × 2 τ, modified
+    // lie-poisson × 2 τ, splitting and its 3 compositions, kinetic-kick × 3 coefficient sets, rk4,
+    // rkmk4) × 2 steps, and the exact flow in one step and at the 2 steps.
     let rows: Vec<&str> = lines.collect();
-    assert_eq!(rows.len(), 69, "{text}");
+    assert_eq!(rows.len(), 73, "{text}");
     for (prefix, n) in [
+        ("modified-lie-poisson,cayley,0.5,-,", 2),
         ("splitting,-,-,-,", 2),
         ("splitting,-,-,kahan-li-6,", 2),
         ("kinetic-kick,-,-,blanes-moan-6,", 2),
@@ -1186,4 +1187,39 @@ fn shard_index_out_of_range_is_a_usage_error() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("0-based"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `modified = true`: Lie–Poisson θ = ½ on the modified Hamiltonian, order 4 on the free body —
+/// at the same step it lands far closer to the exact flow than the plain θ = ½ step; refused off
+/// the free body, with θ ≠ ½ or with a composition, naming the field.
+#[test]
+fn modified_lie_poisson_runs_on_the_free_body_and_is_refused_elsewhere() {
+    let exact = GOOD
+        .replace("\"lie-poisson\"", "\"exact\"")
+        .replace("tau = \"cayley\"\n", "")
+        .replace("theta = 0.5\n", "");
+    let (e, _) = run_text("mod-exact", &exact);
+    let (m, summary) = run_text(
+        "mod",
+        &GOOD.replace("[integrator]", "[integrator]\nmodified = true"),
+    );
+    assert!(summary.contains("order 4"), "{summary}");
+    let (p, _) = run_text("mod-plain", GOOD);
+    let last = |c: &Csv| c.rows[c.rows.len() - 1].clone();
+    let d = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .fold(0.0f64, |x, (u, v)| x.max((u - v).abs()))
+    };
+    let (dm, dp) = (d(&last(&m), &last(&e)), d(&last(&p), &last(&e)));
+    assert!(dm < 0.05 * dp, "modified {dm:e}, plain {dp:e}");
+    assert!(m.max_relative_drift("casimir") < 1e-14);
+    let top = std::fs::read_to_string(scenes_dir().join("heavy-top.toml"))
+        .unwrap()
+        .replace("[integrator]", "[integrator]\nmodified = true");
+    assert_rejected("mod-top", &top, &["integrator.method", "free rigid body"]);
+    let theta0 = GOOD
+        .replace("theta = 0.5", "theta = 0.0")
+        .replace("[integrator]", "[integrator]\nmodified = true");
+    assert_rejected("mod-theta", &theta0, &["integrator.modified", "θ = 0.5"]);
 }
