@@ -10,6 +10,9 @@ use core::f64::consts::PI;
 use lie_groups::{LieGroup, So3};
 use nalgebra::{Matrix3, Vector3};
 
+/// 2⁵²: the largest angle whose rounding is below one radian.
+const PHASE_LIMIT: f64 = 4_503_599_627_370_496.0;
+
 /// The exact flow of the free rigid body `Π̇ = Π × Ω`, `Ṙ = R Ω̂`, `Ω = 𝕀⁻¹Π`, for any t, at a
 /// cost that does not grow with t.
 ///
@@ -85,7 +88,8 @@ impl FreeBodyFlow {
 
     /// (Π(t), R(t)) from (Π, R) at time 0; `r = None` advances Π alone (cheaper).
     ///
-    /// Errors: non-finite t or Π, or a phase |Π|t that overflows; never a panic.
+    /// Errors: non-finite t or Π, or a phase t|Π|/I_min beyond 2⁵² rad (no digit of the phase
+    /// would survive); never a panic.
     pub fn advance(
         &self,
         t: f64,
@@ -100,21 +104,24 @@ impl FreeBodyFlow {
                 what: "momentum Π"
             });
         }
+        // The fastest angle the flow turns, t|Π|/I_min, must keep its phase: beyond 2⁵² rad the
+        // rounding of one period exceeds the period itself and the result would be noise.
+        let m = pi.norm();
+        let phase = t.abs() * (m / self.moments.min());
+        if phase.is_nan() || phase >= PHASE_LIMIT {
+            return Err(IntegratorError::NonFinite {
+                what: "phase |Π|t/I of the exact flow (beyond 2⁵² rad, no digit of the phase left)",
+            });
+        }
         if let Some(flow) = &self.axisymmetric {
             let (mut p, mut g) = (*pi, r.copied());
             flow.kinetic_flow(t, &mut p, g.as_mut())?;
             return Ok((p, g));
         }
-        let m = pi.norm();
         if m == 0.0 {
             return Ok((*pi, r.copied()));
         }
         let tau = t * m;
-        if !tau.is_finite() {
-            return Err(IntegratorError::NonFinite {
-                what: "phase |Π|t of the exact flow",
-            });
-        }
         let p = self.axes.tr_mul(pi) / m;
         let i = self.moments;
         // Sort the axes by moment; D₂ = |Π|² − 2hI_mid (|Π| = 1) decides the circulation axis.
