@@ -31,6 +31,15 @@ pub enum DiscretizationError {
         /// Max-norm of the last residual τ⁻¹(Δ⁻¹ τ(θξ) τ((1−θ)ξ)).
         residual: f64,
     },
+    /// A step's η leaves the domain where τ is invertible (`τ⁻¹(τ(η)) ≠ η`; for exp on SO(3) a
+    /// rotation by more than π), so R̃_d⁻¹ would not recover it.
+    #[error("ξ (‖ξ‖ = {xi_norm:.3e}) leaves the domain where τ = {tau} is invertible")]
+    OutsideTauDomain {
+        /// The τ map's name.
+        tau: &'static str,
+        /// Euclidean norm of the step's ξ.
+        xi_norm: f64,
+    },
     /// The linear map `M_θ(ξ) = θ d^L τ_{θξ} + (1−θ) d^R τ_{(1−θ)ξ}` (the trivialized derivative of
     /// ξ ↦ τ(θξ) τ((1−θ)ξ)) is singular: R̃_d is not a local diffeomorphism at this point, so neither
     /// its inverse nor the inverses of its lifts exist.

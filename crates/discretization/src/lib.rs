@@ -37,6 +37,10 @@
 //!   `R̃_d^{T*}(g, μ, ξ, ν) = ((g τ(−θξ), Ad*_{τ(−θξ)}(λ − ν)), (g τ((1−θ)ξ), Ad*_{τ((1−θ)ξ)} λ))`;
 //!   its inverse is explicit: `μ = θ d^{L*}τ_{−θξ} μ_k + (1−θ) d^{L*}τ_{(1−θ)ξ} μ_{k+1}`,
 //!   `ν = Ad*_{τ(−(1−θ)ξ)} μ_{k+1} − Ad*_{τ(θξ)} μ_k`.
+//! - What an integrator needs ([`LiftedMap`]): the components of the lifts a step of eq. (18) or
+//!   (19) evaluates — base and second points, the momentum update and base momentum of
+//!   `(R̃_d^{T*})⁻¹`, the velocities of `R̃_d^T` — fused, allocation-free, in increment form, with
+//!   the derivatives Newton needs. The `integrators` crate is written against this trait alone.
 //! - The same maps on ℝⁿ ([`VectorSpaceDiscretization`]), where they are the θ-method, the implicit
 //!   midpoint rule and symplectic Euler.
 //!
@@ -76,6 +80,7 @@
 mod cotangent_lift;
 mod discretization_map;
 mod error;
+mod lifted_map;
 mod retraction;
 mod tangent_lift;
 mod vector_space;
@@ -83,5 +88,6 @@ mod vector_space;
 pub use cotangent_lift::phi;
 pub use discretization_map::{DiscretizationMap, InverseMethod, NewtonOptions};
 pub use error::DiscretizationError;
+pub use lifted_map::{LiftedMap, MomentumUpdate};
 pub use retraction::Retraction;
 pub use vector_space::{Point, TangentPoint, VectorSpaceDiscretization};

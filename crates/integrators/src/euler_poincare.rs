@@ -26,29 +26,49 @@
 //! θ = 0 is explicit (ξ = ξ_k, ḡ = g_k). The state is (g, ξ); its momentum is μ = ∂l/∂ξ.
 //! Unlike the Lie–Poisson integrator, this one does not keep μ on its coadjoint orbit.
 
-use crate::lie_poisson::{check_state, check_theta};
-use crate::solver::{ad_dual_operator, check_tau_domain, solve};
+use crate::lie_poisson::{check_state, check_theta, step_too_large};
+use crate::solver::solve;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
-use core::marker::PhantomData;
-use lie_groups::{LieGroup, Operator, Tau, Vector};
+use discretization::{DiscretizationMap, LiftedMap};
+use lie_groups::{LieGroup, Operator, Vector};
 
-/// The Euler–Poincaré integrator (eq. 18) on G with τ map `T`, parameter θ, for the system `S`.
+/// The Euler–Poincaré integrator (eq. 18) on G for the left-trivialized discretization map
+/// `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))` with τ map `T`: the [`TangentLiftIntegrator`] of
+/// [`DiscretizationMap<T>`].
+///
+/// ```
+/// use integrators::{EulerPoincare, Integrator, systems::RigidBody};
+/// use lie_groups::{ExpMap, So3, LieGroup};
+/// use nalgebra::Vector3;
+///
+/// let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+/// let mut ep = EulerPoincare::<So3, ExpMap, _>::new(body, 0.5, Vector3::new(1.0, 0.05, 0.2),
+///                                                  Some(So3::identity())).unwrap();
+/// ep.step(0.01).unwrap();
+/// assert!((ep.time() - 0.01).abs() < 1e-15);
+/// ```
+pub type EulerPoincare<G, T, S> = TangentLiftIntegrator<G, DiscretizationMap<T>, S>;
+
+/// The tangent lift `R̃_d^T` of a discretization map `M` (any [`LiftedMap`]) applied to the
+/// Euler–Poincaré vector field of the system `S` (eq. 18): each step solves
+/// `R̃_d^T(ḡ, ξ, hξ, h f(ḡ, ξ))₁ = (g_k, ξ_k)` for the base velocity ξ and reads
+/// `(g_{k+1}, ξ_{k+1})` from the second point. Every piece of the lift comes from `M`; this type
+/// adds the vector field, the solver and the state.
 ///
 /// State: time t, body velocity ξ ∈ 𝔤, and the configuration g when it is reconstructed.
 #[derive(Debug, Clone)]
-pub struct EulerPoincare<G: LieGroup, T: Tau<G>, S: System<G>> {
+pub struct TangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     system: S,
-    theta: f64,
+    map: M,
     config: SolverConfig,
     t: f64,
     xi: G::Algebra,
     g: Option<G>,
     iterations: usize,
-    _tau: PhantomData<T>,
 }
 
-impl<G: LieGroup, T: Tau<G>, S: System<G>> EulerPoincare<G, T, S> {
+impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> {
     /// Builds the integrator at t = 0 from the body velocity ξ₀ and optionally g₀.
     pub fn new(
         system: S,
@@ -58,15 +78,15 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> EulerPoincare<G, T, S> {
     ) -> Result<Self, IntegratorError> {
         check_theta(theta)?;
         check_state(&system, &xi0, "velocity ξ", g0.as_ref())?;
+        let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
         Ok(Self {
             system,
-            theta,
+            map,
             config: SolverConfig::default(),
             t: 0.0,
             xi: xi0,
             g: g0,
             iterations: 0,
-            _tau: PhantomData,
         })
     }
     /// Builds the integrator from the momentum μ₀ (ξ₀ = ∂h/∂μ(μ₀)).
@@ -102,7 +122,11 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> EulerPoincare<G, T, S> {
     }
     /// θ.
     pub fn theta(&self) -> f64 {
-        self.theta
+        self.map.theta()
+    }
+    /// The discretization map.
+    pub fn map(&self) -> &M {
+        &self.map
     }
     /// Solver iterations used by the last successful step (0 for θ = 0 or before the first).
     pub fn last_iterations(&self) -> usize {
@@ -119,72 +143,66 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> EulerPoincare<G, T, S> {
         self.system.hessian(&mu).apply(&rhs)
     }
 
-    fn base(&self, a: f64, xi: &G::Algebra) -> Option<G> {
-        self.g.as_ref().map(|gk| gk.compose(&T::tau(&xi.scale(a))))
+    /// The base point ḡ over g_k of `R̃_d(ḡ, hξ)` (when g is reconstructed).
+    fn base(&self, h: f64, xi: &G::Algebra) -> Option<G> {
+        let eta = xi.scale(h);
+        self.g.as_ref().map(|gk| self.map.base_point(gk, &eta))
     }
 
-    /// r(ξ) = Ad_{τ(aξ)} ξ − a d^Lτ_{−aξ} f(ḡ, ξ) − ξ_k, a = θh.
-    fn residual(&self, a: f64, xi: &G::Algebra) -> G::Algebra {
-        let xa = xi.scale(a);
-        let ta: G = T::tau(&xa);
-        let f = self.field(self.base(a, xi).as_ref(), xi);
-        ta.adjoint_apply(xi)
-            .sub(&T::dtau_left(&xa.neg()).apply(&f).scale(a))
+    /// r(ξ) = ξ_k-component of `R̃_d^T(ḡ, ξ, hξ, h f(ḡ, ξ))` − ξ_k
+    /// ([`LiftedMap::first_velocity`]).
+    fn residual(&self, h: f64, xi: &G::Algebra) -> G::Algebra {
+        let f = self.field(self.base(h, xi).as_ref(), xi);
+        self.map
+            .first_velocity(&xi.scale(h), xi, &f.scale(h))
             .sub(&self.xi)
     }
 
-    /// ∂r/∂ξ up to O(h²): `Ad_{τ(aξ)} (I − a ad_ξ d^Lτ_{aξ}) − a d^Lτ_{−aξ} ∂f/∂ξ`,
+    /// ∂r/∂ξ up to O(h²): `A + B h ∂f/∂ξ` with the map's
+    /// [`LiftedMap::first_velocity_derivative`] (A, B) and
     /// `∂f/∂ξ ≈ H (M(μ) + ad_ξᵀ H⁻¹)`, H = ∂²h/∂μ², M(μ) = (δ ↦ ad*_δ μ) (drops ∂H/∂μ and ∂F).
-    fn jacobian(&self, a: f64, xi: &G::Algebra) -> G::Operator {
-        let n = G::dim();
-        let xa = xi.scale(a);
-        let ta: G = T::tau(&xa);
-        let id = G::Operator::identity(n);
-        let first = ta
-            .adjoint()
-            .compose(&id.add(&G::ad(xi).compose(&T::dtau_left(&xa)).scale(-a)));
+    fn jacobian(&self, h: f64, xi: &G::Algebra) -> G::Operator {
+        let (a, b) = self.map.first_velocity_derivative(h, xi);
         let mu = self.system.momentum(xi);
         let hess = self.system.hessian(&mu);
-        let mut df = hess.compose(&ad_dual_operator::<G>(&mu));
+        let mut df = hess.compose(&G::ad_dual_operator(&mu));
         if let Some(hinv) = hess.try_inverse() {
             df = df.add(&hess.compose(&G::ad(xi).transpose()).compose(&hinv));
         }
-        first.add(&T::dtau_left(&xa.neg()).compose(&df).scale(-a))
+        a.add(&b.compose(&df).scale(h))
     }
 }
 
-impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S> {
+impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftIntegrator<G, M, S> {
     type Group = G;
 
     fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
         if !h.is_finite() {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
-        let a = self.theta * h;
-        let b = (1.0 - self.theta) * h;
-        let (xi, iterations) = if self.theta == 0.0 {
+        let theta = self.theta();
+        let (xi, iterations) = if theta == 0.0 {
             (self.xi.clone(), 0)
         } else {
-            let evaluate = |xi: &G::Algebra| Ok((self.residual(a, xi), ()));
+            let evaluate = |xi: &G::Algebra| Ok((self.residual(h, xi), ()));
             // Predictor ξ⁰ = ξ_k + θh f(g_k, ξ_k): r(ξ) = ξ − ξ_k − θh f + O(h²) at ξ = ξ_k + O(h),
             // so ξ⁰ is within O(h²) of the solution (ξ_k alone is O(h)).
-            let guess = self.xi.axpy(a, &self.field(self.g.as_ref(), &self.xi));
+            let guess = self
+                .xi
+                .axpy(theta * h, &self.field(self.g.as_ref(), &self.xi));
             let solution = solve::<G, ()>(&self.config, h, guess, evaluate, |xi, _| {
-                self.jacobian(a, xi)
+                self.jacobian(h, xi)
             })?;
             (solution.xi, solution.iterations)
         };
+        let eta = xi.scale(h);
         if self.config.check_domain {
-            check_tau_domain::<G, T>(&xi.scale(h), h)?;
+            self.map.check_domain(&eta).map_err(step_too_large(h))?;
         }
-        let gbar = self.base(a, &xi);
+        // The second point of R̃_d^T(ḡ, ξ, η, h f(ḡ, ξ)).
+        let gbar = self.base(h, &xi);
         let f = self.field(gbar.as_ref(), &xi);
-        let xb = xi.scale(b);
-        let tb: G = T::tau(&xb);
-        let xi1 = tb
-            .inverse()
-            .adjoint_apply(&xi)
-            .add(&T::dtau_left(&xb).apply(&f).scale(b));
+        let xi1 = self.map.second_velocity(&eta, &xi, &f.scale(h));
         if !xi1.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "velocity ξ_{k+1}",
@@ -192,8 +210,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S>
         }
         let g1 = match gbar {
             Some(gb) => {
-                // normalize: keep g on the group to round-off over any number of steps.
-                let g1 = gb.compose(&tb).normalize();
+                let g1 = self.map.second_point(&gb, &eta);
                 if !g1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration g_{k+1}",
@@ -228,17 +245,21 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for EulerPoincare<G, T, S>
         self.system.casimir(&self.momentum())
     }
     fn method_name(&self) -> String {
-        format!("euler-poincare(tau={}, theta={})", T::NAME, self.theta)
+        format!(
+            "euler-poincare({}, theta={})",
+            self.map.label(),
+            self.theta()
+        )
     }
     /// Order 2 for θ = ½, order 1 otherwise (`tests/order.rs`); θ = 0 is explicit. A variational
     /// integrator: symplectic in (g, ξ) through the discrete Legendre map, but μ = ∂l/∂ξ leaves its
     /// coadjoint orbit (Casimirs are not kept).
     fn info(&self) -> crate::MethodInfo {
-        let symmetric = self.theta == 0.5;
+        let symmetric = self.theta() == 0.5;
         crate::MethodInfo {
             order: if symmetric { 2 } else { 1 },
             symmetric,
-            explicit: self.theta == 0.0,
+            explicit: self.theta() == 0.0,
             poisson: false,
             casimirs: false,
             momentum_map: false,

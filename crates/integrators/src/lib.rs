@@ -9,6 +9,14 @@
 //!   (with the sign of NOTES.md slip 2 corrected). Keeps μ on its coadjoint orbit: Casimirs are
 //!   conserved to round-off.
 //! - [`EulerPoincare`]: the tangent lift, eq. (18), state (g, ξ).
+//!
+//!   Both are assembled from the discretization layer: [`CotangentLiftIntegrator`] and
+//!   [`TangentLiftIntegrator`] are written against `discretization::LiftedMap` alone (the fused
+//!   components of T*R̃_d⁻¹, R̃_d^{T*} and T R̃_d with their Newton derivatives) and add only the
+//!   vector field, the solver and the state; `LiePoisson<G, T, S>` and `EulerPoincare<G, T, S>` are
+//!   these for the left-trivialized `DiscretizationMap<T>`. A new map implementing `LiftedMap` gets
+//!   its integrators with no integrator code (`tests/assembled_step.rs` checks the assembled steps
+//!   against the hand-derived schemes on SO(3), SE(3), SE(2) and SO(4)).
 //! - [`EulerArnold`]: the quadratic-Lagrangian system l(ξ) = ½⟨𝕀ξ, ξ⟩ both integrate.
 //! - [`splitting`]: explicit Poisson splittings into pieces with exact flows (Strang, with
 //!   [`Composition`] to order 10; exact kinetic flow + kicks with Blanes–Moan coefficients).
@@ -77,8 +85,8 @@ pub use baselines::{QuaternionRk4, Rkmk4};
 pub use compose::{Composition, CompositionScheme, StateSnapshot, SymmetricMethod};
 pub use error::IntegratorError;
 pub use euler_arnold::{EulerArnold, EulerArnoldEulerPoincare, EulerArnoldLiePoisson};
-pub use euler_poincare::EulerPoincare;
+pub use euler_poincare::{EulerPoincare, TangentLiftIntegrator};
 pub use integrator::{integrate, Integrator, MethodInfo};
-pub use lie_poisson::LiePoisson;
+pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};
 pub use system::System;

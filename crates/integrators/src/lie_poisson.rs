@@ -36,16 +36,15 @@
 //! `−½ ad*_{(·)} μ`, which remains the default for other groups, keeps J exact up to O(h²) and
 //! needed 5–6); the force's derivative is dropped (see [`crate::solver`]).
 
-use crate::solver::{ad_dual_operator, check_tau_domain, solve, Solution};
+use crate::solver::{solve, Solution};
 use crate::system::force;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
-use core::marker::PhantomData;
-use lie_groups::{LieGroup, Operator, Tau, Vector};
+use discretization::{DiscretizationError, DiscretizationMap, LiftedMap, MomentumUpdate};
+use lie_groups::{LieGroup, Operator, Vector};
 
-/// The Lie–Poisson integrator (eq. 19) on G with τ map `T`, parameter θ, for the system `S`.
-///
-/// State: time t, body momentum μ ∈ 𝔤*, and the configuration g ∈ G when it is reconstructed
-/// (`None` skips reconstruction; systems with a potential require it).
+/// The Lie–Poisson integrator (eq. 19) on G for the left-trivialized discretization map
+/// `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))` with τ map `T`: the [`CotangentLiftIntegrator`] of
+/// [`DiscretizationMap<T>`].
 ///
 /// ```
 /// use integrators::{LiePoisson, Integrator, systems::RigidBody};
@@ -58,10 +57,20 @@ use lie_groups::{LieGroup, Operator, Tau, Vector};
 /// lp.step(0.01).unwrap();
 /// assert!((lp.time() - 0.01).abs() < 1e-15);
 /// ```
+pub type LiePoisson<G, T, S> = CotangentLiftIntegrator<G, DiscretizationMap<T>, S>;
+
+/// The cotangent lift `R̃_d^{T*}` of a discretization map `M` (any [`LiftedMap`]) applied to the
+/// Hamiltonian vector field of the system `S` (eq. 19): each step solves
+/// `(R̃_d^{T*})⁻¹((g_k, μ_k), (g_{k+1}, μ_{k+1})) = h X̃(ḡ, μ̄)` for the one unknown η = h ∂h/∂μ(μ̄).
+/// Every piece of the lift comes from `M`; this type adds the vector field, the solver and the
+/// state.
+///
+/// State: time t, body momentum μ ∈ 𝔤*, and the configuration g ∈ G when it is reconstructed
+/// (`None` skips reconstruction; systems with a potential require it).
 #[derive(Debug, Clone)]
-pub struct LiePoisson<G: LieGroup, T: Tau<G>, S: System<G>> {
+pub struct CotangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     system: S,
-    theta: f64,
+    map: M,
     config: SolverConfig,
     t: f64,
     mu: G::Algebra,
@@ -70,7 +79,14 @@ pub struct LiePoisson<G: LieGroup, T: Tau<G>, S: System<G>> {
     mu_err: G::Algebra,
     g: Option<G>,
     iterations: usize,
-    _tau: PhantomData<T>,
+}
+
+/// A map's domain error as the integrator's [`IntegratorError::StepTooLarge`].
+pub(crate) fn step_too_large(step: f64) -> impl Fn(DiscretizationError) -> IntegratorError {
+    move |e| IntegratorError::StepTooLarge {
+        step,
+        reason: e.to_string(),
+    }
 }
 
 /// Refuses θ outside [0, 1] (NaN included).
@@ -109,7 +125,7 @@ pub(crate) fn check_state<G: LieGroup, S: System<G>>(
     Ok(())
 }
 
-impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
+impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S> {
     /// Builds the integrator at t = 0 from μ₀ and optionally g₀, with the default
     /// [`SolverConfig`]. Errors: θ ∉ [0, 1], non-finite μ₀ or g₀, g₀ missing for a system with a
     /// potential.
@@ -121,16 +137,16 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
     ) -> Result<Self, IntegratorError> {
         check_theta(theta)?;
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
+        let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
         Ok(Self {
             system,
-            theta,
+            map,
             config: SolverConfig::default(),
             t: 0.0,
             mu_err: G::Algebra::zeros(G::dim()),
             mu: mu0,
             g: g0,
             iterations: 0,
-            _tau: PhantomData,
         })
     }
     /// Replaces the solver configuration.
@@ -160,7 +176,11 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
     }
     /// θ.
     pub fn theta(&self) -> f64 {
-        self.theta
+        self.map.theta()
+    }
+    /// The discretization map.
+    pub fn map(&self) -> &M {
+        &self.map
     }
     /// The solver configuration.
     pub fn solver(&self) -> &SolverConfig {
@@ -171,50 +191,26 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
         self.iterations
     }
 
-    /// For a trial ξ: ν = Ad*_{τ(θξ)} μ_k + h F(g_k τ(θξ)) and μ_{k+1} = Ad*_{τ((1−θ)ξ)} ν, in
-    /// increment form: with δ_ζ(x) := (Ad*_{τ(ζ)} − I)x (`Tau::tau_coadjoint_increment`, linear in
-    /// x, computed from ζ), `Δν = δ_{θξ}(μ_k) + h F` and
-    /// `μ_{k+1} = μ_k + (Δν + δ_{(1−θ)ξ}(μ_k) + δ_{(1−θ)ξ}(Δν))`: μ_k is rounded once per step, so
-    /// |μ|² follows a random walk of roundings instead of drifting with the rounding of τ's
-    /// entries `1 − O(|ξ|²)` at small steps. τ itself is not formed.
+    /// For a trial ξ (= η, the step's algebra vector): the impulse `ν = h F(ḡ)` at the base
+    /// point `ḡ` of `R̃_d(ḡ, ξ)` (formed only for a system with a potential) and the map's
+    /// [`LiftedMap::momentum_update`].
     #[inline]
-    fn update(&self, h: f64, xi: &G::Algebra) -> Update<G> {
-        let th = self.theta;
-        let b = 1.0 - th;
-        let mut dnu = if th == 0.0 {
-            G::Algebra::zeros(G::dim())
-        } else {
-            T::tau_coadjoint_increment(&xi.scale(th), &self.mu)
-        };
-        // The force at ḡ = g_k τ(θξ); ḡ is formed only for a system with a potential.
-        if let Some(gk) = self.g.as_ref().filter(|_| self.system.has_potential()) {
-            let gbar = (th != 0.0).then(|| T::compose_tau(gk, &xi.scale(th)));
-            if let Some(f) = force(&self.system, Some(gbar.as_ref().unwrap_or(gk))) {
-                dnu = dnu.axpy(h, &f);
-            }
-        }
-        let xb = xi.scale(b);
-        let dmu = dnu
-            .add(&T::tau_coadjoint_increment(&xb, &self.mu))
-            .add(&T::tau_coadjoint_increment(&xb, &dnu));
-        Update {
-            nu: self.mu.add(&dnu),
-            mu1: self.mu.add(&dmu),
-            dmu,
-        }
+    fn update(&self, h: f64, xi: &G::Algebra) -> MomentumUpdate<G::Algebra> {
+        let impulse = self
+            .g
+            .as_ref()
+            .filter(|_| self.system.has_potential())
+            .and_then(|gk| force(&self.system, Some(&self.map.base_point(gk, xi))))
+            .map(|f| f.scale(h));
+        self.map.momentum_update(xi, &self.mu, impulse.as_ref())
     }
 
-    /// For a trial ξ: the [`Self::update`] and
-    /// μ̄ = θ d^{L*}τ_{−θξ} μ_k + (1−θ) d^{L*}τ_{(1−θ)ξ} μ_{k+1}.
+    /// For a trial ξ: the [`Self::update`] and the base momentum μ̄
+    /// ([`LiftedMap::base_momentum`]).
     #[inline]
     fn evaluate(&self, h: f64, xi: &G::Algebra) -> Evaluation<G> {
-        let th = self.theta;
-        let b = 1.0 - th;
         let up = self.update(h, xi);
-        let mut bar = T::dtau_left_dual_apply(&xi.scale(b), &up.mu1).scale(b);
-        if th != 0.0 {
-            bar = bar.axpy(th, &T::dtau_left_dual_apply(&xi.scale(-th), &self.mu));
-        }
+        let bar = self.map.base_momentum(xi, &self.mu, &up.next);
         Evaluation { bar, up }
     }
 
@@ -229,7 +225,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
         let v = self.system.velocity(&self.mu);
         let mut mid = self.mu.axpy(0.5 * h, &G::ad_dual_apply(&v, &self.mu));
         if let Some(f) = force(&self.system, self.g.as_ref()) {
-            mid = mid.axpy((1.0 - self.theta) * h, &f);
+            mid = mid.axpy((1.0 - self.theta()) * h, &f);
         }
         self.system.velocity(&mid).scale(h)
     }
@@ -247,68 +243,24 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> LiePoisson<G, T, S> {
         solve::<G, _>(&self.config, h, self.predictor(h), evaluate, jacobian)
     }
 
-    /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ: exact
-    /// without a potential where the group has closed forms of `∂/∂ζ (d^{L*}τ_ζ μ)` (SO(3) with exp
-    /// and Cayley), exact up to O(h²) otherwise (see [`crate::solver`]).
+    /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ:
+    /// `I − h H(μ̄) ∂μ̄/∂ξ` with the map's [`LiftedMap::base_momentum_derivative`] (exact without a
+    /// potential where τ has closed forms, SO(3) with exp and Cayley; exact up to O(h²) otherwise;
+    /// the force's derivative is dropped, see [`crate::solver`]).
     fn jacobian(&self, h: f64, xi: &G::Algebra, ev: &Evaluation<G>) -> G::Operator {
-        let n = G::dim();
-        let th = self.theta;
-        let b = 1.0 - th;
-        let xa = xi.scale(th);
-        let xb = xi.scale(b);
-        let dtb = T::dtau_left(&xb);
-        // ∂μ_{k+1}/∂ξ = (1−θ) M(μ_{k+1}) d^Lτ_{(1−θ)ξ} + θ Ad*_{τ((1−θ)ξ)} M(ν) d^Lτ_{θξ},
-        // M(μ) := (δ ↦ ad*_δ μ); exact but for the force's derivative. For θ = ½ both terms end
-        // in the same d^Lτ_{ξ/2}, which is factored out (one operator product fewer).
-        let m1 = ad_dual_operator::<G>(&ev.up.mu1);
-        let dmu1 = if th == 0.0 {
-            m1.compose(&dtb).scale(b)
-        } else {
-            // Ad*_{τ((1−θ)ξ)} M(ν) = (Ad_{τ((1−θ)ξ)})ᵀ M(ν).
-            let mnu = T::tau(&xb)
-                .adjoint()
-                .transpose()
-                .compose(&ad_dual_operator::<G>(&ev.up.nu));
-            if th == b {
-                m1.add(&mnu).compose(&dtb).scale(b)
-            } else {
-                m1.compose(&dtb)
-                    .scale(b)
-                    .add(&mnu.compose(&T::dtau_left(&xa)).scale(th))
-            }
-        };
-        // ∂μ̄/∂ξ = (1−θ) d^{L*}τ_{(1−θ)ξ} ∂μ_{k+1}/∂ξ + (1−θ)² D((1−θ)ξ; μ_{k+1})
-        //          − θ² D(−θξ; μ_k),  D(ζ; μ) := ∂/∂ζ (d^{L*}τ_ζ μ) (`Tau::dtau_left_dual_derivative`:
-        // exact for groups with closed forms, else −½ M(μ), which gives
-        // θ²/2 M(μ_k) − (1−θ)²/2 M(μ_{k+1}) for the last two terms).
-        let mut dbar = dtb
-            .transpose()
-            .compose(&dmu1)
-            .scale(b)
-            .add(&T::dtau_left_dual_derivative(&xb, &ev.up.mu1).scale(b * b));
-        if th != 0.0 {
-            dbar = dbar.add(&T::dtau_left_dual_derivative(&xa.neg(), &self.mu).scale(-th * th));
-        }
-        G::Operator::identity(n).add(&self.system.hessian(&ev.bar).compose(&dbar).scale(-h))
+        let dbar = self.map.base_momentum_derivative(xi, &self.mu, &ev.up);
+        G::Operator::identity(G::dim()).add(&self.system.hessian(&ev.bar).compose(&dbar).scale(-h))
     }
-}
-
-/// The new state's ingredients at a trial ξ (see [`LiePoisson::update`]).
-struct Update<G: LieGroup> {
-    nu: G::Algebra,
-    mu1: G::Algebra,
-    /// μ_{k+1} − μ_k before rounding.
-    dmu: G::Algebra,
 }
 
 /// The quantities of one evaluation of the step map at a trial ξ, shared by the residual and
 /// the Newton Jacobian at the same ξ.
 struct Evaluation<G: LieGroup> {
     bar: G::Algebra,
-    up: Update<G>,
+    up: MomentumUpdate<G::Algebra>,
 }
 
-impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
+impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftIntegrator<G, M, S> {
     type Group = G;
 
     fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
@@ -318,13 +270,13 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
         let solution = self.solve_velocity(h)?;
         let xi = solution.xi;
         if self.config.check_domain {
-            check_tau_domain::<G, T>(&xi, h)?;
+            self.map.check_domain(&xi).map_err(step_too_large(h))?;
         }
         // The new state at the solution: from the solver's last evaluation when that was at
         // exactly this ξ, else evaluated again (bitwise the same either way).
-        let Update { dmu, .. } = match solution.evaluation {
-            Some(ev) => ev.up,
-            None => self.update(h, &xi),
+        let dmu = match solution.evaluation {
+            Some(ev) => ev.up.increment,
+            None => self.update(h, &xi).increment,
         };
         // μ_{k+1} = μ_k + (Δμ + carried error), by TwoSum (Knuth): the new rounding error is kept
         // exactly for the next step (compensated summation, Vilmart 2008).
@@ -337,19 +289,10 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
                 what: "momentum μ_{k+1}",
             });
         }
+        // g_{k+1}: the second point of R̃_d(ḡ, ξ), ḡ the base point over g_k.
         let g1 = match self.g.as_ref() {
             Some(gk) => {
-                // g_{k+1} = g_k τ(θξ) τ((1−θ)ξ), each factor in the increment form of
-                // `Tau::compose_tau` (g rounded once per factor).
-                let th = self.theta;
-                let ga = if th == 0.0 {
-                    gk.clone()
-                } else {
-                    T::compose_tau(gk, &xi.scale(th))
-                };
-                let g1 = T::compose_tau(&ga, &xi.scale(1.0 - th))
-                    // Keep g on the group to round-off over any number of steps.
-                    .normalize();
+                let g1 = self.map.second_point(&self.map.base_point(gk, &xi), &xi);
                 if !g1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration g_{k+1}",
@@ -385,14 +328,14 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
         self.system.casimir(&self.mu)
     }
     fn method_name(&self) -> String {
-        format!("lie-poisson(tau={}, theta={})", T::NAME, self.theta)
+        format!("lie-poisson({}, theta={})", self.map.label(), self.theta())
     }
     /// Order 2 for θ = ½, and for every θ without a potential (θ = 0 and θ = 1 then coincide);
     /// order 1 for θ ≠ ½ with a potential (`tests/order.rs`, `tests/potential.rs`). Implicit, a
     /// Poisson map keeping μ on its coadjoint orbit and, for an invariant system, the spatial
     /// momentum map `Ad*_{g⁻¹} μ` (g_{k+1} = g_k τ(θξ) τ((1−θ)ξ) and μ_{k+1} the matching Ad*).
     fn info(&self) -> crate::MethodInfo {
-        let symmetric = self.theta == 0.5;
+        let symmetric = self.theta() == 0.5;
         crate::MethodInfo {
             order: if symmetric || !self.system.has_potential() {
                 2
@@ -414,7 +357,7 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> Integrator for LiePoisson<G, T, S> {
 mod tests {
     use super::*;
     use crate::systems::{HeavyTop, RigidBody};
-    use lie_groups::{Cayley, ExpMap, So3};
+    use lie_groups::{Cayley, ExpMap, So3, Tau};
     use nalgebra::Vector3;
 
     /// |ξ⁰ − ξ*| for the predictor ξ⁰ and the solved ξ* of one step of size h.

@@ -236,46 +236,6 @@ fn invert<G: LieGroup>(step: f64, j: &G::Operator) -> Result<G::Operator, Integr
         })
 }
 
-/// Checks that ξ lies where τ is invertible, `τ⁻¹(τ(ξ)) = ξ` to `1e-8 (1 + ‖ξ‖)`; a failure is
-/// [`IntegratorError::StepTooLarge`] (for τ = exp on SO(3): a rotation by more than π in one step).
-/// Inside [`lie_groups::Tau::INVERTIBLE_RADIUS`] the round trip is known to hold and is skipped.
-#[inline]
-pub fn check_tau_domain<G: LieGroup, T: lie_groups::Tau<G>>(
-    xi: &G::Algebra,
-    step: f64,
-) -> Result<(), IntegratorError> {
-    if xi.norm() <= T::INVERTIBLE_RADIUS {
-        Ok(())
-    } else {
-        check_tau_round_trip::<G, T>(xi, step)
-    }
-}
-
-#[cold]
-fn check_tau_round_trip<G: LieGroup, T: lie_groups::Tau<G>>(
-    xi: &G::Algebra,
-    step: f64,
-) -> Result<(), IntegratorError> {
-    let back = T::tau_inv(&T::tau(xi)).map_err(|e| IntegratorError::StepTooLarge {
-        step,
-        reason: format!("τ = {} cannot be inverted at the step's ξ: {e}", T::NAME),
-    })?;
-    let err = back.sub(xi).norm_max();
-    if err <= 1e-8 * (1.0 + xi.norm_max()) {
-        Ok(())
-    } else {
-        Err(IntegratorError::StepTooLarge {
-            step,
-            reason: format!(
-                "ξ = {:?} (‖ξ‖ = {:.3e}) leaves the domain where τ = {} is invertible",
-                xi.to_vec(),
-                xi.norm(),
-                T::NAME
-            ),
-        })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,0 +1,203 @@
+//! The fused pieces of [`LiftedMap`] that integrators compose with a vector field, checked on every
+//! group and τ map against the unfused lifts of `cotangent_lift.rs` and `tangent_lift.rs`
+//! (independent code: whole bundle points, matrices of τ, M_θ inverted) and against central
+//! differences.
+
+mod common;
+
+use common::fd_vector;
+use discretization::{DiscretizationError, DiscretizationMap, LiftedMap};
+use lie_groups::testing::assert_small;
+use lie_groups::{LieGroup, Operator, Tau, Vector};
+use trivial_bundles::prelude::*;
+
+fn map<G: LieGroup, T: Tau<G>>(theta: f64) -> DiscretizationMap<T> {
+    <DiscretizationMap<T> as LiftedMap<G>>::with_theta(theta).expect("θ ∈ [0, 1]")
+}
+
+/// base_point, second_point, momentum_update and base_momentum are the components of
+/// `(R̃_d^{T*})⁻¹((g_k, μ_k), (g_{k+1}, μ_{k+1})) = (ḡ, μ̄, η, ν)`.
+fn check_cotangent_pieces<G: LieGroup, T: Tau<G>>(
+    a: &G::Algebra,
+    eta: &G::Algebra,
+    mu: &G::Algebra,
+    nu: &G::Algebra,
+    theta: f64,
+) {
+    let m = map::<G, T>(theta);
+    let gk = G::exp(a);
+    let gbar = m.base_point(&gk, eta);
+    let g1 = m.second_point(&gbar, eta);
+    let up = m.momentum_update(eta, mu, Some(nu));
+    let bar = m.base_momentum(eta, mu, &up.next);
+    let s = 1.0 + eta.norm() + mu.norm() + nu.norm();
+    // the transported momentum, from the matrix of τ
+    let plain = T::tau(&eta.scale(theta)).coadjoint_apply(mu);
+    assert_small(
+        "Ad*_{τ(θη)} μ_k",
+        up.transported.sub(&plain).norm_max(),
+        1e-13 * s,
+    );
+    assert_small(
+        "μ_k + increment = μ_{k+1}",
+        mu.add(&up.increment).sub(&up.next).norm_max(),
+        1e-15 * s,
+    );
+    let k = CotangentBundle::from_parts(gk.clone(), mu.clone());
+    let k1 = CotangentBundle::from_parts(g1, up.next.clone());
+    let x = m
+        .cotangent_lift_inverse(&k, &k1)
+        .expect("inside the domain");
+    assert_small("ḡ", x.g().matrix_distance(&gbar), 1e-12 * s);
+    assert_small("η", x.xi().sub(eta).norm_max(), 1e-12 * s);
+    assert_small("ν", x.nu().sub(nu).norm_max(), 1e-12 * s);
+    assert_small("μ̄", x.mu().sub(&bar).norm_max(), 1e-12 * s);
+}
+
+/// `∂μ̄/∂η` against central differences of η ↦ μ̄(η, μ_k, μ_{k+1}(η)) with ν fixed; `exact`
+/// where τ has closed forms of ∂(d^{L*}τ_ζ μ)/∂ζ, else only up to O(|η|²).
+fn check_momentum_derivative<G: LieGroup, T: Tau<G>>(
+    eta: &G::Algebra,
+    mu: &G::Algebra,
+    nu: &G::Algebra,
+    theta: f64,
+    exact: bool,
+) {
+    let m = map::<G, T>(theta);
+    let bar = |e: &G::Algebra| m.base_momentum(e, mu, &m.momentum_update(e, mu, Some(nu)).next);
+    let d = m.base_momentum_derivative(eta, mu, &m.momentum_update(eta, mu, Some(nu)));
+    let s = 1.0 + mu.norm() + nu.norm();
+    // Without closed forms D(ζ; μ) is its leading term −½ ad*_(·) μ, exact up to O(|ζ|).
+    let tol = if exact {
+        1e-8 * s * (1.0 + eta.norm()).powi(3)
+    } else {
+        0.5 * s * eta.norm() + 1e-8 * s
+    };
+    for i in 0..G::dim() {
+        let dir = G::Algebra::from_fn(G::dim(), |j| if i == j { 1.0 } else { 0.0 });
+        let fd = fd_vector(|t| bar(&eta.axpy(t, &dir)));
+        assert_small("∂μ̄/∂η", d.apply(&dir).sub(&fd).norm_max(), tol);
+    }
+}
+
+/// first/second_velocity and the points are the components of `R̃_d^T(ḡ, ξ, η, ζ)`; the
+/// derivative of ξ ↦ first_velocity(hξ, ξ, hKξ) is `A + B hK`.
+fn check_tangent_pieces<G: LieGroup, T: Tau<G>>(
+    a: &G::Algebra,
+    xi: &G::Algebra,
+    zeta: &G::Algebra,
+    c: &G::Algebra,
+    theta: f64,
+) {
+    let m = map::<G, T>(theta);
+    let h = 0.3;
+    let eta = xi.scale(h);
+    let gbar = G::exp(a);
+    let (k, k1) = m.tangent_lift(&Ttg::new(
+        gbar.clone(),
+        xi.clone(),
+        eta.clone(),
+        zeta.clone(),
+    ));
+    let s = 1.0 + xi.norm() + zeta.norm();
+    assert_small(
+        "base_point(g_k, η) = ḡ",
+        m.base_point(k.base(), &eta).matrix_distance(&gbar),
+        1e-12 * s,
+    );
+    assert_small(
+        "second_point",
+        m.second_point(&gbar, &eta).matrix_distance(k1.base()),
+        1e-12 * s,
+    );
+    assert_small(
+        "ξ_k",
+        m.first_velocity(&eta, xi, zeta).sub(k.fiber()).norm_max(),
+        1e-12 * s,
+    );
+    assert_small(
+        "ξ_{k+1}",
+        m.second_velocity(&eta, xi, zeta).sub(k1.fiber()).norm_max(),
+        1e-12 * s,
+    );
+    // ζ ≡ 0: the derivative A is exact; ζ = hKξ: A + B hK up to O(h|ζ|) (h = 0.3 here; the
+    // integrators use ζ = h f, so the neglected term is O(h²) in their Newton matrix).
+    let kop = G::ad(c);
+    let (da, db) = m.first_velocity_derivative(h, xi);
+    for (k, tol) in [
+        (0.0, 1e-8 * s * (1.0 + xi.norm()).powi(3)),
+        (
+            1.0,
+            1e-8 + 2.0 * h * h * c.norm() * xi.norm() * (1.0 + xi.norm()),
+        ),
+    ] {
+        let f = |x: &G::Algebra| m.first_velocity(&x.scale(h), x, &kop.apply(x).scale(h * k));
+        let d = da.add(&db.compose(&kop).scale(h * k));
+        for i in 0..G::dim() {
+            let dir = G::Algebra::from_fn(G::dim(), |j| if i == j { 1.0 } else { 0.0 });
+            let fd = fd_vector(|t| f(&xi.axpy(t, &dir)));
+            assert_small("∂ξ_k/∂ξ", d.apply(&dir).sub(&fd).norm_max(), tol);
+        }
+    }
+}
+
+macro_rules! lifted_map_suite {
+    ($name:ident, $G:ty, $T:ty, $exact:expr) => {
+        mod $name {
+            use super::*;
+            use lie_groups::testing::algebra;
+            use proptest::prelude::*;
+            type G = $G;
+
+            fn theta() -> impl Strategy<Value = f64> {
+                prop_oneof![Just(0.0), Just(0.5), Just(1.0), 0.0..1.0f64]
+            }
+
+            proptest! {
+                #![proptest_config(ProptestConfig::with_cases(24))]
+                #[test]
+                fn cotangent_pieces_are_the_inverse_cotangent_lift(a in algebra::<G>(1.0), eta in algebra::<G>(0.5), mu in algebra::<G>(1.0), nu in algebra::<G>(0.3), th in theta()) {
+                    check_cotangent_pieces::<G, $T>(&a, &eta, &mu, &nu, th);
+                }
+                #[test]
+                fn base_momentum_derivative_matches_finite_differences(eta in algebra::<G>(if $exact { 0.5 } else { 0.05 }), mu in algebra::<G>(1.0), nu in algebra::<G>(0.3), th in theta()) {
+                    check_momentum_derivative::<G, $T>(&eta, &mu, &nu, th, $exact);
+                }
+                #[test]
+                fn tangent_pieces_are_the_tangent_lift(a in algebra::<G>(1.0), xi in algebra::<G>(1.0), zeta in algebra::<G>(0.3), c in algebra::<G>(1.0), th in theta()) {
+                    check_tangent_pieces::<G, $T>(&a, &xi, &zeta, &c, th);
+                }
+            }
+        }
+    };
+}
+
+use lie_groups::{Cayley, ExpMap, Se2, Se3, So3, SoN};
+lifted_map_suite!(so3_exp, So3, ExpMap, true);
+lifted_map_suite!(so3_cayley, So3, Cayley, true);
+lifted_map_suite!(se3_exp, Se3, ExpMap, false);
+lifted_map_suite!(se3_cayley, Se3, Cayley, false);
+lifted_map_suite!(se2_exp, Se2, ExpMap, false);
+lifted_map_suite!(se2_cayley, Se2, Cayley, false);
+lifted_map_suite!(so4_exp, SoN<4>, ExpMap, false);
+lifted_map_suite!(so4_cayley, SoN<4>, Cayley, false);
+
+/// The domain check: exp on SO(3) inverts below a half turn only; NaN is outside.
+#[test]
+fn check_domain_refuses_steps_tau_cannot_invert() {
+    use nalgebra::Vector3;
+    let m = map::<So3, ExpMap>(0.5);
+    assert!(LiftedMap::<So3>::check_domain(&m, &Vector3::new(0.3, -1.0, 2.0)).is_ok());
+    let far = Vector3::new(0.0, 0.0, 3.5);
+    assert!(matches!(
+        LiftedMap::<So3>::check_domain(&m, &far),
+        Err(DiscretizationError::OutsideTauDomain { tau: "exp", .. })
+    ));
+    let nan = Vector3::new(f64::NAN, 0.0, 0.0);
+    assert!(LiftedMap::<So3>::check_domain(&m, &nan).is_err());
+    assert!(<DiscretizationMap<Cayley> as LiftedMap<So3>>::with_theta(1.5).is_err());
+    assert_eq!(
+        LiftedMap::<So3>::label(&map::<So3, Cayley>(0.0)),
+        "tau=cayley"
+    );
+}
