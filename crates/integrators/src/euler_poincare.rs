@@ -133,12 +133,16 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
         self.iterations
     }
 
-    /// `f(g, ξ) = ∂²h/∂μ² (ad*_ξ μ + F(g))`, μ = ∂l/∂ξ: the Euler–Poincaré vector field.
-    fn field(&self, g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
+    /// `f(t, g, ξ) = ∂²h/∂μ² (ad*_ξ μ + F(g) + F_ext(t, g, ξ))`, μ = ∂l/∂ξ: the Euler–Poincaré
+    /// vector field (F_ext only for a forced system, see [`crate::forces`]).
+    fn field(&self, t: f64, g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
         let mu = self.system.momentum(xi);
         let mut rhs = G::ad_dual_apply(xi, &mu);
         if let Some(f) = force(&self.system, g) {
             rhs = rhs.add(&f);
+        }
+        if self.system.is_forced() {
+            rhs = rhs.add(&self.system.external_force(t, g, xi));
         }
         self.system.hessian(&mu).apply(&rhs)
     }
@@ -152,7 +156,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     /// r(ξ) = ξ_k-component of `R̃_d^T(ḡ, ξ, hξ, h f(ḡ, ξ))` − ξ_k
     /// ([`LiftedMap::first_velocity`]).
     fn residual(&self, h: f64, xi: &G::Algebra) -> G::Algebra {
-        let f = self.field(self.base(h, xi).as_ref(), xi);
+        let f = self.field(self.t + self.theta() * h, self.base(h, xi).as_ref(), xi);
         self.map
             .first_velocity(&xi.scale(h), xi, &f.scale(h))
             .sub(&self.xi)
@@ -189,7 +193,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
             // so ξ⁰ is within O(h²) of the solution (ξ_k alone is O(h)).
             let guess = self
                 .xi
-                .axpy(theta * h, &self.field(self.g.as_ref(), &self.xi));
+                .axpy(theta * h, &self.field(self.t, self.g.as_ref(), &self.xi));
             let solution = solve::<G, ()>(&self.config, h, guess, evaluate, |xi, _| {
                 self.jacobian(h, xi)
             })?;
@@ -201,7 +205,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         }
         // The second point of R̃_d^T(ḡ, ξ, η, h f(ḡ, ξ)).
         let gbar = self.base(h, &xi);
-        let f = self.field(gbar.as_ref(), &xi);
+        let f = self.field(self.t + theta * h, gbar.as_ref(), &xi);
         let xi1 = self.map.second_velocity(&eta, &xi, &f.scale(h));
         if !xi1.is_finite() {
             return Err(IntegratorError::NonFinite {

@@ -24,6 +24,9 @@
 //!   independent of T), as a method ([`exact::ExactFreeBody`]) and as the kinetic piece of the
 //!   kicks ([`exact::FreeBodyFlow`], [`exact::FreeBodySe3Flow`]).
 //! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
+//! - [`forces`]: external forces and controls `F_ext(t, g, ξ)` ([`forces::Forced`], scheduled body
+//!   torques, damping), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
+//!   Lagrange–d'Alembert way (`tests/forces.rs`: orders 2/1/4, exact momentum-map balance).
 //!
 //! Every integrator describes itself ([`Integrator::info`] → [`MethodInfo`]: order, symmetric,
 //! explicit, what it keeps). Which to choose, with measured costs per accuracy: `docs/choosing.md`
@@ -73,6 +76,7 @@ mod error;
 pub mod euler_arnold;
 pub mod euler_poincare;
 pub mod exact;
+pub mod forces;
 mod integrator;
 pub mod lie_poisson;
 pub mod modified;

@@ -119,7 +119,7 @@ pub(crate) fn check_state<G: LieGroup, S: System<G>>(
                 what: "configuration g",
             });
         }
-    } else if system.has_potential() {
+    } else if system.needs_configuration() {
         return Err(IntegratorError::MissingConfiguration);
     }
     Ok(())
@@ -192,10 +192,14 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     }
 
     /// For a trial ξ (= η, the step's algebra vector): the impulse `ν = h F(ḡ)` at the base
-    /// point `ḡ` of `R̃_d(ḡ, ξ)` (formed only for a system with a potential) and the map's
-    /// [`LiftedMap::momentum_update`].
+    /// point `ḡ` of `R̃_d(ḡ, ξ)` (formed only for a system with a potential), plus
+    /// `h F_ext(t_k + θh, ḡ, ξ/h)` for a forced system (discrete Lagrange–d'Alembert, see
+    /// [`crate::forces`]), and the map's [`LiftedMap::momentum_update`].
     #[inline]
     fn update(&self, h: f64, xi: &G::Algebra) -> MomentumUpdate<G::Algebra> {
+        if self.system.is_forced() {
+            return self.forced_update(h, xi);
+        }
         let impulse = self
             .g
             .as_ref()
@@ -203,6 +207,26 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             .and_then(|gk| force(&self.system, Some(&self.map.base_point(gk, xi))))
             .map(|f| f.scale(h));
         self.map.momentum_update(xi, &self.mu, impulse.as_ref())
+    }
+
+    /// [`Self::update`] of a forced system.
+    fn forced_update(&self, h: f64, xi: &G::Algebra) -> MomentumUpdate<G::Algebra> {
+        let gbar = self
+            .g
+            .as_ref()
+            .filter(|_| self.system.needs_configuration())
+            .map(|gk| self.map.base_point(gk, xi));
+        let velocity = if h != 0.0 {
+            xi.scale(1.0 / h)
+        } else {
+            self.system.velocity(&self.mu)
+        };
+        let t = self.t + self.theta() * h;
+        let mut f = self.system.external_force(t, gbar.as_ref(), &velocity);
+        if let Some(fp) = force(&self.system, gbar.as_ref()) {
+            f = f.add(&fp);
+        }
+        self.map.momentum_update(xi, &self.mu, Some(&f.scale(h)))
     }
 
     /// For a trial ξ: the [`Self::update`] and the base momentum μ̄
@@ -225,6 +249,10 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         let v = self.system.velocity(&self.mu);
         let mut mid = self.mu.axpy(0.5 * h, &G::ad_dual_apply(&v, &self.mu));
         if let Some(f) = force(&self.system, self.g.as_ref()) {
+            mid = mid.axpy((1.0 - self.theta()) * h, &f);
+        }
+        if self.system.is_forced() {
+            let f = self.system.external_force(self.t, self.g.as_ref(), &v);
             mid = mid.axpy((1.0 - self.theta()) * h, &f);
         }
         self.system.velocity(&mid).scale(h)
@@ -331,13 +359,14 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         format!("lie-poisson({}, theta={})", self.map.label(), self.theta())
     }
     /// Order 2 for θ = ½, and for every θ without a potential (θ = 0 and θ = 1 then coincide);
-    /// order 1 for θ ≠ ½ with a potential (`tests/order.rs`, `tests/potential.rs`). Implicit, a
+    /// order 1 for θ ≠ ½ with a potential or an external force (`tests/order.rs`, `tests/potential.rs`,
+    /// `tests/forces.rs`). Implicit, a
     /// Poisson map keeping μ on its coadjoint orbit and, for an invariant system, the spatial
     /// momentum map `Ad*_{g⁻¹} μ` (g_{k+1} = g_k τ(θξ) τ((1−θ)ξ) and μ_{k+1} the matching Ad*).
     fn info(&self) -> crate::MethodInfo {
         let symmetric = self.theta() == 0.5;
         crate::MethodInfo {
-            order: if symmetric || !self.system.has_potential() {
+            order: if symmetric || !(self.system.has_potential() || self.system.is_forced()) {
                 2
             } else {
                 1
@@ -345,8 +374,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
             symmetric,
             explicit: false,
             poisson: true,
-            casimirs: !self.system.has_potential(),
-            momentum_map: true,
+            casimirs: !self.system.has_potential() && !self.system.is_forced(),
+            momentum_map: !self.system.is_forced(),
             energy: false,
             on_group: true,
         }

@@ -4,9 +4,12 @@
 //! ξ ↦ μ = ∂l/∂ξ (the inverse of μ ↦ ∂h/∂μ) and, optionally, a potential V: G → ℝ. The equations of
 //! motion it defines are, with F(g) = −T*_e L_g dV(g) the left-trivialized force (§2.1):
 //!
-//! - Lie–Poisson form: `μ̇ = ad*_{∂h/∂μ} μ + F(g)`, `ġ = g ∂h/∂μ`;
-//! - Euler–Poincaré form: `d/dt ∂l/∂ξ = ad*_ξ ∂l/∂ξ + F(g)`, `ġ = g ξ`, i.e.
-//!   `ξ̇ = ∂²h/∂μ² (ad*_ξ μ + F(g))` with μ = ∂l/∂ξ.
+//! - Lie–Poisson form: `μ̇ = ad*_{∂h/∂μ} μ + F(g) + F_ext(t, g, ξ)`, `ġ = g ∂h/∂μ`;
+//! - Euler–Poincaré form: `d/dt ∂l/∂ξ = ad*_ξ ∂l/∂ξ + F(g) + F_ext(t, g, ξ)`, `ġ = g ξ`, i.e.
+//!   `ξ̇ = ∂²h/∂μ² (ad*_ξ μ + F(g) + F_ext)` with μ = ∂l/∂ξ.
+//!
+//! `F_ext` is an optional external force ([`System::external_force`], [`crate::forces`]): zero for
+//! a conservative system.
 //!
 //! Conventions (see `lie-groups`): `ad*_ξ := (ad_ξ)ᵀ`, 𝔤* ≅ ℝⁿ by the Euclidean pairing.
 
@@ -42,6 +45,22 @@ pub trait System<G: LieGroup> {
     /// The force entering the equations of motion is its negative, `F(g) = −T*_e L_g dV(g)`.
     fn potential_differential(&self, _g: &G) -> G::Algebra {
         G::Algebra::zeros(G::dim())
+    }
+    /// Whether an external (non-conservative) force `F_ext(t, g, ξ)` acts on the system (see
+    /// [`crate::forces`]); integrators then apply it in the discrete Lagrange–d'Alembert way.
+    fn is_forced(&self) -> bool {
+        false
+    }
+    /// The external force or torque `F_ext(t, g, ξ) ∈ 𝔤*`, left-trivialized (body frame), at time t,
+    /// configuration g (`None` when the run does not reconstruct it) and body velocity ξ; zero for
+    /// an unforced system.
+    fn external_force(&self, _t: f64, _g: Option<&G>, _xi: &G::Algebra) -> G::Algebra {
+        G::Algebra::zeros(G::dim())
+    }
+    /// Whether integrators need the configuration g: a potential, or an external force that reads
+    /// g.
+    fn needs_configuration(&self) -> bool {
+        self.has_potential()
     }
     /// A Casimir function C(μ) of the Lie–Poisson bracket, where the system has one it wants
     /// monitored (|Π|² for the free rigid body). Conserved exactly by the flow when there is no

@@ -4,6 +4,7 @@
 //! without a potential, and the RK4 / RKMK4 baselines.
 
 use integrators::baselines::{QuaternionRk4, Rkmk4};
+use integrators::forces::{BodyTorque, Forced, LinearDamping, Schedule};
 use integrators::systems::{HeavyTop, PlanarBody, RigidBody, RigidBodySe3};
 use integrators::{EulerPoincare, Integrator, LiePoisson, SolverConfig, SolverKind, System};
 use lie_groups::testing::{allocations, CountingAllocator};
@@ -92,6 +93,25 @@ fn so3_steps_allocate_nothing() {
         0.01,
     );
     assert_steps_allocate_nothing(Rkmk4::new(top, pi0, Some(r0)).unwrap(), 0.01);
+    // forced: a scheduled body torque and damping
+    let schedule = Schedule::new(
+        vec![0.0, 1.0],
+        vec![vec![0.1, 0.0, -0.2], vec![0.3, 0.1, 0.0]],
+    )
+    .unwrap();
+    let forced = Forced::new(
+        body.clone(),
+        (
+            BodyTorque::<So3>::new(schedule).unwrap(),
+            LinearDamping::<So3>::new(Matrix3::identity() * 0.1).unwrap(),
+        ),
+    );
+    every_method::<So3, _>(&forced, pi0, Some(r0), 0.01);
+    assert_steps_allocate_nothing(
+        QuaternionRk4::new(forced.clone(), pi0, Some(r0)).unwrap(),
+        0.01,
+    );
+    assert_steps_allocate_nothing(Rkmk4::new(forced, pi0, Some(r0)).unwrap(), 0.01);
 }
 
 #[test]

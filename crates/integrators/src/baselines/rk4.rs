@@ -103,14 +103,25 @@ impl<S: System<So3>> QuaternionRk4<S> {
             .map(|(q, _)| UnitQuaternion::new_unchecked(*q))
     }
 
-    /// `Π̇ = ad*_Ω Π + F(R)`, Ω = ∂h/∂Π; returns (Ω, Π̇).
+    /// `Π̇ = ad*_Ω Π + F(R) + F_ext(t, R, Ω)`, Ω = ∂h/∂Π; returns (Ω, Π̇).
     #[inline]
-    fn momentum_rate(&self, q: Option<&Quaternion<f64>>, pi: &Vector3<f64>) -> [Vector3<f64>; 2] {
+    fn momentum_rate(
+        &self,
+        t: f64,
+        q: Option<&Quaternion<f64>>,
+        pi: &Vector3<f64>,
+    ) -> [Vector3<f64>; 2] {
         let omega = self.system.velocity(pi);
         let mut dpi = So3::ad_dual_apply(&omega, pi);
-        if self.system.has_potential() {
-            if let Some(f) = q.and_then(|q| force(&self.system, Some(&rotation(q)))) {
+        if self.system.has_potential() || self.system.is_forced() {
+            let r = q
+                .filter(|_| self.system.needs_configuration())
+                .map(rotation);
+            if let Some(f) = force(&self.system, r.as_ref()) {
                 dpi += f;
+            }
+            if self.system.is_forced() {
+                dpi += self.system.external_force(t, r.as_ref(), &omega);
             }
         }
         [omega, dpi]
@@ -126,13 +137,14 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
         }
         let pi = self.pi;
         let half = 0.5 * h;
+        let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
         match self.attitude.as_ref() {
             None => {
-                // Π alone (no potential: the momentum equation does not involve R).
-                let [_, k1] = self.momentum_rate(None, &pi);
-                let [_, k2] = self.momentum_rate(None, &(pi + k1 * half));
-                let [_, k3] = self.momentum_rate(None, &(pi + k2 * half));
-                let [_, k4] = self.momentum_rate(None, &(pi + k3 * h));
+                // Π alone (nothing reads R: the momentum equation does not involve it).
+                let [_, k1] = self.momentum_rate(t0, None, &pi);
+                let [_, k2] = self.momentum_rate(tm, None, &(pi + k1 * half));
+                let [_, k3] = self.momentum_rate(tm, None, &(pi + k2 * half));
+                let [_, k4] = self.momentum_rate(t1, None, &(pi + k3 * h));
                 let pi1 = pi + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
                 if !pi1.iter().all(|x| x.is_finite()) {
                     return Err(IntegratorError::NonFinite {
@@ -143,16 +155,16 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
             }
             Some((q, _)) => {
                 let q = *q;
-                let [w1, k1] = self.momentum_rate(Some(&q), &pi);
+                let [w1, k1] = self.momentum_rate(t0, Some(&q), &pi);
                 let l1 = quaternion_rate(&q, &w1);
                 let (q2, p2) = (q + l1 * half, pi + k1 * half);
-                let [w2, k2] = self.momentum_rate(Some(&q2), &p2);
+                let [w2, k2] = self.momentum_rate(tm, Some(&q2), &p2);
                 let l2 = quaternion_rate(&q2, &w2);
                 let (q3, p3) = (q + l2 * half, pi + k2 * half);
-                let [w3, k3] = self.momentum_rate(Some(&q3), &p3);
+                let [w3, k3] = self.momentum_rate(tm, Some(&q3), &p3);
                 let l3 = quaternion_rate(&q3, &w3);
                 let (q4, p4) = (q + l3 * h, pi + k3 * h);
-                let [w4, k4] = self.momentum_rate(Some(&q4), &p4);
+                let [w4, k4] = self.momentum_rate(t1, Some(&q4), &p4);
                 let l4 = quaternion_rate(&q4, &w4);
                 let pi1 = pi + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
                 let q1 = q + (l1 + (l2 + l3) * 2.0 + l4) * (h / 6.0);

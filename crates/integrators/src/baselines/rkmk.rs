@@ -76,13 +76,17 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         &self.system
     }
 
-    /// (ξ, μ̇) = (∂h/∂μ(μ), ad*_ξ μ + F(g)) at a stage; g is only used with a potential.
+    /// (ξ, μ̇) = (∂h/∂μ(μ), ad*_ξ μ + F(g) + F_ext(t, g, ξ)) at a stage; g is only used with a
+    /// potential or a force that reads it.
     #[inline]
-    fn rates(&self, g: Option<&G>, mu: &G::Algebra) -> (G::Algebra, G::Algebra) {
+    fn rates(&self, t: f64, g: Option<&G>, mu: &G::Algebra) -> (G::Algebra, G::Algebra) {
         let xi = self.system.velocity(mu);
         let mut dmu = G::ad_dual_apply(&xi, mu);
         if let Some(f) = force(&self.system, g) {
             dmu = dmu.add(&f);
+        }
+        if self.system.is_forced() {
+            dmu = dmu.add(&self.system.external_force(t, g, &xi));
         }
         (xi, dmu)
     }
@@ -104,13 +108,14 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let half = 0.5 * h;
+        let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
         let mu = &self.mu;
         let Some(gk) = self.g.as_ref() else {
             // μ alone: plain RK4 on μ̇ = ad*_ξ μ (no potential, checked at construction).
-            let (_, l1) = self.rates(None, mu);
-            let (_, l2) = self.rates(None, &mu.axpy(half, &l1));
-            let (_, l3) = self.rates(None, &mu.axpy(half, &l2));
-            let (_, l4) = self.rates(None, &mu.axpy(h, &l3));
+            let (_, l1) = self.rates(t0, None, mu);
+            let (_, l2) = self.rates(tm, None, &mu.axpy(half, &l1));
+            let (_, l3) = self.rates(tm, None, &mu.axpy(half, &l2));
+            let (_, l4) = self.rates(t1, None, &mu.axpy(h, &l3));
             let mu1 = mu.axpy(h / 6.0, &l1.add(&l2.add(&l3).scale(2.0)).add(&l4));
             if !mu1.is_finite() {
                 return Err(IntegratorError::NonFinite {
@@ -121,23 +126,23 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
             self.t += h;
             return Ok(());
         };
-        let potential = self.system.has_potential();
-        // g_i = g_k exp(Θ_i), only evaluated where the force needs it.
+        let potential = self.system.needs_configuration();
+        // g_i = g_k exp(Θ_i), only evaluated where a force reads it.
         let stage_g = |theta: &G::Algebra| potential.then(|| gk.compose(&G::exp(theta)));
 
         // Stage 1: Θ₁ = 0, (d^L exp_0)⁻¹ = I.
-        let (k1, l1) = self.rates(Some(gk), mu);
+        let (k1, l1) = self.rates(t0, Some(gk), mu);
         // Stage 2: Θ₂ = h/2 K₁.
         let t2 = k1.scale(half);
-        let (x2, l2) = self.rates(stage_g(&t2).as_ref(), &mu.axpy(half, &l1));
+        let (x2, l2) = self.rates(tm, stage_g(&t2).as_ref(), &mu.axpy(half, &l1));
         let k2 = dexp_inv_series::<G>(&t2, &x2);
         // Stage 3: Θ₃ = h/2 K₂.
         let t3 = k2.scale(half);
-        let (x3, l3) = self.rates(stage_g(&t3).as_ref(), &mu.axpy(half, &l2));
+        let (x3, l3) = self.rates(tm, stage_g(&t3).as_ref(), &mu.axpy(half, &l2));
         let k3 = dexp_inv_series::<G>(&t3, &x3);
         // Stage 4: Θ₄ = h K₃.
         let t4 = k3.scale(h);
-        let (x4, l4) = self.rates(stage_g(&t4).as_ref(), &mu.axpy(h, &l3));
+        let (x4, l4) = self.rates(t1, stage_g(&t4).as_ref(), &mu.axpy(h, &l3));
         let k4 = dexp_inv_series::<G>(&t4, &x4);
 
         let theta = k1.add(&k2.add(&k3).scale(2.0)).add(&k4).scale(h / 6.0);

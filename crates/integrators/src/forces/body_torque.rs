@@ -1,0 +1,54 @@
+//! [`BodyTorque`]: a scheduled body-frame force or torque.
+
+use crate::forces::{ExternalForce, Schedule};
+use crate::IntegratorError;
+use core::marker::PhantomData;
+use lie_groups::{LieGroup, Vector};
+
+/// `F_ext(t) = u(t)`: a body-frame covector (a torque on SO(3); torque and force on SE(3)) given by
+/// a [`Schedule`] — a control input entering with the identity input map. It does not read g or ξ.
+#[derive(Debug, Clone)]
+pub struct BodyTorque<G> {
+    schedule: Schedule,
+    _group: PhantomData<fn() -> G>,
+}
+
+impl<G: LieGroup> BodyTorque<G> {
+    /// The torque of `schedule`, whose values must have the algebra's dimension.
+    pub fn new(schedule: Schedule) -> Result<Self, IntegratorError> {
+        if schedule.dim() != G::dim() {
+            return Err(IntegratorError::InvalidParameter {
+                reason: format!(
+                    "a body torque on this group has {} components, the schedule's values {}",
+                    G::dim(),
+                    schedule.dim()
+                ),
+            });
+        }
+        Ok(Self {
+            schedule,
+            _group: PhantomData,
+        })
+    }
+    /// A constant torque.
+    pub fn constant(value: G::Algebra) -> Result<Self, IntegratorError> {
+        Self::new(Schedule::constant(value.to_vec())?)
+    }
+}
+
+impl<G: LieGroup> ExternalForce<G> for BodyTorque<G> {
+    #[inline]
+    fn force(&self, t: f64, _g: Option<&G>, _xi: &G::Algebra) -> G::Algebra {
+        let n = G::dim();
+        // Algebras of dimension ≤ 16 evaluate through a stack buffer (no allocation).
+        let mut buf = [0.0; 16];
+        if n <= buf.len() {
+            self.schedule.eval_into(t, &mut buf[..n]);
+            G::Algebra::from_fn(n, |i| buf[i])
+        } else {
+            let mut v = vec![0.0; n];
+            self.schedule.eval_into(t, &mut v);
+            G::Algebra::from_fn(n, |i| v[i])
+        }
+    }
+}

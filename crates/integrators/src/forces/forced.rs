@@ -1,0 +1,68 @@
+//! [`Forced`]: a system with an external force attached.
+
+use crate::forces::ExternalForce;
+use crate::System;
+use lie_groups::LieGroup;
+
+/// The system `S` acted on by the external force `F`: the same Hamiltonian, potential and
+/// Casimir, with [`System::external_force`] = `F`. The energy `h(μ) + V(g)` is no longer conserved
+/// (it changes by the work of F), nor, in general, are the Casimir and the momentum map.
+#[derive(Debug, Clone)]
+pub struct Forced<S, F> {
+    system: S,
+    force: F,
+}
+
+impl<S, F> Forced<S, F> {
+    /// `system` with `force` attached.
+    pub fn new(system: S, force: F) -> Self {
+        Self { system, force }
+    }
+    /// The unforced system.
+    pub fn system(&self) -> &S {
+        &self.system
+    }
+    /// The force.
+    pub fn force(&self) -> &F {
+        &self.force
+    }
+}
+
+impl<G: LieGroup, S: System<G>, F: ExternalForce<G>> System<G> for Forced<S, F> {
+    fn hamiltonian(&self, mu: &G::Algebra) -> f64 {
+        self.system.hamiltonian(mu)
+    }
+    fn velocity(&self, mu: &G::Algebra) -> G::Algebra {
+        self.system.velocity(mu)
+    }
+    fn hessian(&self, mu: &G::Algebra) -> G::Operator {
+        self.system.hessian(mu)
+    }
+    fn momentum(&self, xi: &G::Algebra) -> G::Algebra {
+        self.system.momentum(xi)
+    }
+    fn has_potential(&self) -> bool {
+        self.system.has_potential()
+    }
+    fn potential(&self, g: &G) -> f64 {
+        self.system.potential(g)
+    }
+    fn potential_differential(&self, g: &G) -> G::Algebra {
+        self.system.potential_differential(g)
+    }
+    fn is_forced(&self) -> bool {
+        true
+    }
+    fn external_force(&self, t: f64, g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
+        self.force.force(t, g, xi)
+    }
+    fn needs_configuration(&self) -> bool {
+        self.system.needs_configuration() || self.force.needs_configuration()
+    }
+    fn casimir(&self, mu: &G::Algebra) -> Option<f64> {
+        self.system.casimir(mu)
+    }
+    fn energy(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
+        self.system.energy(mu, g)
+    }
+}

@@ -1,0 +1,119 @@
+//! [`Schedule`]: a piecewise-linear function of time with values in ℝⁿ.
+
+use crate::IntegratorError;
+
+/// A piecewise-linear schedule `u(t)`: `values[i]` at `times[i]`, linear in between, constant
+/// before the first and after the last time (a single entry is a constant).
+///
+/// Built only from finite, strictly increasing times and finite values of one length; otherwise
+/// an [`IntegratorError::InvalidParameter`] naming the offending entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Schedule {
+    times: Vec<f64>,
+    values: Vec<Vec<f64>>,
+}
+
+impl Schedule {
+    /// The schedule through `(times[i], values[i])`.
+    pub fn new(times: Vec<f64>, values: Vec<Vec<f64>>) -> Result<Self, IntegratorError> {
+        let bad = |reason: String| Err(IntegratorError::InvalidParameter { reason });
+        if times.is_empty() || times.len() != values.len() {
+            return bad(format!(
+                "a schedule needs as many values as times, at least one (got {} times, {} values)",
+                times.len(),
+                values.len()
+            ));
+        }
+        if let Some(i) = times.iter().position(|t| !t.is_finite()) {
+            return bad(format!("times[{i}] = {} is not finite", times[i]));
+        }
+        if let Some(i) = (1..times.len()).find(|&i| times[i] <= times[i - 1]) {
+            return bad(format!(
+                "times must increase strictly: times[{}] = {} after times[{}] = {}",
+                i,
+                times[i],
+                i - 1,
+                times[i - 1]
+            ));
+        }
+        let n = values[0].len();
+        for (i, v) in values.iter().enumerate() {
+            if v.len() != n {
+                return bad(format!(
+                    "values[{i}] has {} entries, values[0] has {n}",
+                    v.len()
+                ));
+            }
+            if let Some(j) = v.iter().position(|x| !x.is_finite()) {
+                return bad(format!("values[{i}][{j}] = {} is not finite", v[j]));
+            }
+        }
+        Ok(Self { times, values })
+    }
+    /// The constant schedule u(t) = value.
+    pub fn constant(value: Vec<f64>) -> Result<Self, IntegratorError> {
+        Self::new(vec![0.0], vec![value])
+    }
+    /// The dimension of the values.
+    pub fn dim(&self) -> usize {
+        self.values[0].len()
+    }
+    /// `u(t)` into `out` (length [`Self::dim`]); no allocation.
+    pub fn eval_into(&self, t: f64, out: &mut [f64]) {
+        let n = self.times.len();
+        let i = self.times.partition_point(|&ti| ti <= t);
+        if i == 0 || n == 1 {
+            out.copy_from_slice(&self.values[0]);
+        } else if i == n {
+            out.copy_from_slice(&self.values[n - 1]);
+        } else {
+            let (t0, t1) = (self.times[i - 1], self.times[i]);
+            let s = (t - t0) / (t1 - t0);
+            for (k, o) in out.iter_mut().enumerate() {
+                let (a, b) = (self.values[i - 1][k], self.values[i][k]);
+                *o = a + s * (b - a);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn interpolates_linearly_and_holds_the_ends() {
+        let s = Schedule::new(vec![1.0, 3.0], vec![vec![0.0, 2.0], vec![4.0, -2.0]]).unwrap();
+        let mut out = [0.0; 2];
+        for (t, want) in [
+            (0.0, [0.0, 2.0]),
+            (2.0, [2.0, 0.0]),
+            (2.5, [3.0, -1.0]),
+            (9.0, [4.0, -2.0]),
+        ] {
+            s.eval_into(t, &mut out);
+            assert_eq!(out, want, "t = {t}");
+        }
+    }
+
+    #[test]
+    fn malformed_schedules_are_refused_naming_the_entry() {
+        let msg = |r: Result<Schedule, IntegratorError>| r.unwrap_err().to_string();
+        assert!(msg(Schedule::new(vec![0.0, 1.0], vec![vec![1.0]])).contains("as many values"));
+        assert!(
+            msg(Schedule::new(vec![0.0, 0.0], vec![vec![1.0], vec![2.0]])).contains("times[1]")
+        );
+        assert!(msg(Schedule::new(
+            vec![0.0, f64::NAN],
+            vec![vec![1.0], vec![2.0]]
+        ))
+        .contains("times[1]"));
+        assert!(msg(Schedule::new(
+            vec![0.0, 1.0],
+            vec![vec![1.0], vec![2.0, 3.0]]
+        ))
+        .contains("values[1]"));
+        assert!(msg(Schedule::new(vec![0.0], vec![vec![f64::INFINITY]])).contains("values[0][0]"));
+        assert!(Schedule::new(vec![], vec![]).is_err());
+    }
+}
