@@ -320,3 +320,23 @@ fn a_force_that_reads_g_requires_it_and_failures_leave_the_state() {
     assert!(LinearDamping::<So3>::new(-Matrix3::identity()).is_err());
     assert!(LinearDamping::<So3>::new(Matrix3::identity() * f64::NAN).is_err());
 }
+
+#[test]
+fn optional_terms_sum_to_the_present_ones() {
+    let xi = Vector3::new(0.3, -1.2, 0.7);
+    let damping =
+        LinearDamping::<So3>::new(Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0))).unwrap();
+    let both = (Some(schedule()), Some(damping.clone()));
+    let only_damping: (Option<BodyTorque<So3>>, _) = (None, Some(damping.clone()));
+    for t in [0.0, 0.4, 1.7, 9.0] {
+        let sum = schedule().force(t, None, &xi) + damping.force(t, None, &xi);
+        assert!((both.force(t, None, &xi) - sum).norm() < 1e-15);
+        assert!((only_damping.force(t, None, &xi) - damping.force(t, None, &xi)).norm() == 0.0);
+    }
+    let none: (Option<BodyTorque<So3>>, Option<LinearDamping<So3>>) = (None, None);
+    assert_eq!(none.force(1.0, None, &xi), Vector3::zeros());
+    assert!(!none.needs_configuration() && !both.needs_configuration());
+    let reads_g =
+        Some(|_: f64, g: Option<&So3>, _: &Vector3<f64>| g.unwrap().matrix().column(0).into());
+    assert!(reads_g.needs_configuration());
+}

@@ -313,6 +313,9 @@ fn cmd_run(
         );
     }
     say!("  properties   {}", summary.info);
+    if let Some(f) = scene.system.forces() {
+        say!("  forces       {}", f.describe());
+    }
     if let Some(s) = &m.splitting {
         say!(
             "  splitting    {} (order {}: exact kinetic flows between potential kicks)",

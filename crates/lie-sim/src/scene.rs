@@ -39,7 +39,16 @@
 //! seed = 1                          # member i depends only on (seed, i) (default 0)
 //! kind = "momenta-on-energy-level"  # or "momenta-on-sphere"
 //! # monitor_every = 1               # energy/Casimir sampled every k steps (and the last)
+//!
+//! [forces]                          # optional (free-rigid-body, heavy-top): external forces
+//! torque = [0.0, 0.0, 0.1]          # constant body torque, or a piecewise-linear schedule:
+//! # torque = { times = [0.0, 5.0], values = [[0.0, 0.0, 0.1], [0.0, 0.0, 0.0]] }
+//! damping = 0.05                    # F = −D Ω: a number c (D = c I), 3 entries, or 3×3 symmetric
 //! ```
+//!
+//! `[forces]` is applied in the discrete Lagrange–d'Alembert way (`integrators::forces`) by
+//! `lie-poisson`, `euler-poincare`, `rk4` and `rkmk4`; the other methods refuse it. The torque
+//! schedule holds its first value before `times[0]` and its last after the end.
 //!
 //! `composition` names a scheme of `integrators::CompositionScheme` (`triple-jump-4|6|8|10`,
 //! `suzuki-4|6|8|10`, `mclachlan-4`, `kahan-li-6`, `kahan-li-8`, `mclachlan-8`,
@@ -335,6 +344,40 @@ pub struct RawScene {
     pub output: RawOutput,
     /// `[sweep]` (optional): the ensemble run by `lie-sim sweep`.
     pub sweep: Option<RawSweep>,
+    /// `[forces]` (optional): external torques and damping (free-rigid-body, heavy-top).
+    pub forces: Option<RawForces>,
+}
+
+/// `[forces]`: an external body torque (constant or a piecewise-linear schedule) and viscous
+/// damping `F = −D Ω`, applied in the discrete Lagrange–d'Alembert way
+/// (`integrators::forces`).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawForces {
+    /// Body torque: `[τ₁, τ₂, τ₃]`, or `{ times = [...], values = [[...], ...] }`.
+    pub torque: Option<RawSchedule>,
+    /// Damping D: a number c (D = c I), three diagonal entries, or a symmetric 3×3 matrix.
+    pub damping: Option<RawInertia>,
+}
+
+/// A constant vector or a piecewise-linear schedule of vectors.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum RawSchedule {
+    /// A constant.
+    Constant(Vec<f64>),
+    /// `values[i]` at `times[i]`, linear in between, held outside.
+    Table(RawScheduleTable),
+}
+
+/// `{ times = [...], values = [[...], ...] }`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawScheduleTable {
+    /// Strictly increasing times.
+    pub times: Vec<f64>,
+    /// One vector per time.
+    pub values: Vec<Vec<f64>>,
 }
 
 /// `[system]`: the kind and its physical parameters; which parameters apply depends on the kind.
@@ -511,6 +554,33 @@ pub struct RigidBody {
     pub momentum: Vector3<f64>,
     /// Initial attitude R₀ ∈ SO(3).
     pub attitude: Matrix3<f64>,
+    /// External torque and damping (`[forces]`).
+    pub forces: Option<Forces>,
+}
+
+/// The checked `[forces]` table: a body torque schedule and a damping matrix, either optional.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Forces {
+    /// Body torque u(t).
+    pub torque: Option<integrators::forces::Schedule>,
+    /// Damping D (F = −D Ω): symmetric, finite, nonnegative diagonal.
+    pub damping: Option<Matrix3<f64>>,
+}
+
+impl Forces {
+    /// One line for the run's summary: which forces act.
+    pub fn describe(&self) -> String {
+        let torque = self.torque.as_ref().map(|s| match s.knots() {
+            1 => "constant body torque".to_string(),
+            n => format!("body torque on a {n}-knot schedule"),
+        });
+        let damping = self.damping.map(|_| "damping −D Ω".to_string());
+        let terms: Vec<String> = [torque, damping].into_iter().flatten().collect();
+        format!(
+            "{} (discrete Lagrange–d'Alembert; energy and Casimir change by their work)",
+            terms.join(" + ")
+        )
+    }
 }
 
 /// Heavy top on SO(3).
@@ -528,6 +598,8 @@ pub struct HeavyTop {
     pub momentum: Vector3<f64>,
     /// Initial attitude R₀.
     pub attitude: Matrix3<f64>,
+    /// External torque and damping (`[forces]`).
+    pub forces: Option<Forces>,
 }
 
 /// Rigid body on SE(3), free or in a central gravity field.
@@ -605,6 +677,15 @@ impl System {
             Self::RigidBodySe3(p) => p.gravitational_parameter > 0.0,
             Self::PlanarBodySe2(p) => p.stiffness != 0.0 || p.gravity != Vector2::zeros(),
             Self::FreeRigidBody(_) | Self::GeodesicSoN(_) => false,
+        }
+    }
+
+    /// The external forces of the scene, if any.
+    pub fn forces(&self) -> Option<&Forces> {
+        match self {
+            Self::FreeRigidBody(p) => p.forces.as_ref(),
+            Self::HeavyTop(p) => p.forces.as_ref(),
+            _ => None,
         }
     }
 
@@ -739,7 +820,23 @@ impl Scene {
             message,
         };
         let name = raw.name.clone().unwrap_or_else(|| stem.to_string());
-        let system = check_system(&raw.system, &raw.initial).map_err(|(f, m)| bad(&f, m))?;
+        let mut system = check_system(&raw.system, &raw.initial).map_err(|(f, m)| bad(&f, m))?;
+        if let Some(f) = &raw.forces {
+            let forces = check_forces(f).map_err(|(f, m)| bad(&f, m))?;
+            match &mut system {
+                System::FreeRigidBody(p) => p.forces = Some(forces),
+                System::HeavyTop(p) => p.forces = Some(forces),
+                other => {
+                    return Err(bad(
+                        "forces",
+                        format!(
+                            "[forces] applies to free-rigid-body and heavy-top scenes, not {}",
+                            other.kind()
+                        ),
+                    ))
+                }
+            }
+        }
 
         let it = &raw.integrator;
         let step = positive("integrator.step", it.step).map_err(|(f, m)| bad(&f, m))?;
@@ -1010,6 +1107,19 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
 /// a splitting of the SO(n) geodesic, the kinetic–kick off the rigid body, the exact flow or the
 /// modified Hamiltonian off the free body. The one place these rules live: the scene check and `sim::dispatch` both ask here.
 pub fn inapplicable(spec: &MethodSpec, system: &System) -> Option<String> {
+    if system.forces().is_some()
+        && (spec.modified
+            || matches!(
+                spec.method,
+                Method::Splitting | Method::KineticKick | Method::Exact | Method::EulerArnold
+            ))
+    {
+        return Some(format!(
+            "{} does not take external forces ([forces]); use lie-poisson, euler-poincare, rk4 \
+             or rkmk4",
+            spec.method_label()
+        ));
+    }
     if spec.modified && !matches!(system, System::FreeRigidBody(_)) {
         return Some(
             "the modified Hamiltonian (modified = true) is derived for the free rigid body only"
@@ -1127,6 +1237,61 @@ fn momentum_of_len(kind: SystemKind, mu: &[f64], len: usize) -> Result<(), Field
     finite_all("initial.momentum", mu)
 }
 
+fn check_forces(f: &RawForces) -> Result<Forces, FieldError> {
+    use integrators::forces::{LinearDamping, Schedule};
+    let torque = match &f.torque {
+        None => None,
+        Some(raw) => {
+            let field = "forces.torque";
+            let schedule = match raw {
+                RawSchedule::Constant(v) => Schedule::constant(v.clone()),
+                RawSchedule::Table(t) => Schedule::new(t.times.clone(), t.values.clone()),
+            }
+            .map_err(|e| (field.to_string(), e.to_string()))?;
+            if schedule.dim() != 3 {
+                return Err((
+                    field.into(),
+                    format!("a body torque has 3 components, got {}", schedule.dim()),
+                ));
+            }
+            Some(schedule)
+        }
+    };
+    let damping = match &f.damping {
+        None => None,
+        Some(raw) => {
+            let field = "forces.damping";
+            let d = match raw {
+                RawInertia::Scalar(c) => Matrix3::identity() * *c,
+                RawInertia::Diagonal(v) if v.len() == 3 => {
+                    Matrix3::from_diagonal(&Vector3::new(v[0], v[1], v[2]))
+                }
+                RawInertia::Matrix(rows)
+                    if rows.len() == 3 && rows.iter().all(|r| r.len() == 3) =>
+                {
+                    Matrix3::from_fn(|i, j| rows[i][j])
+                }
+                _ => {
+                    return Err((
+                        field.into(),
+                        "give a number c (D = c I), 3 diagonal entries or a 3×3 matrix".into(),
+                    ))
+                }
+            };
+            LinearDamping::<lie_groups::So3>::new(d)
+                .map_err(|e| (field.to_string(), e.to_string()))?;
+            Some(d)
+        }
+    };
+    if torque.is_none() && damping.is_none() {
+        return Err((
+            "forces".into(),
+            "an empty [forces] table: give torque and/or damping".into(),
+        ));
+    }
+    Ok(Forces { torque, damping })
+}
+
 fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> {
     let kind = s.kind;
     check_keys(kind, s, init)?;
@@ -1136,6 +1301,7 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
             inertia: inertia3(kind, &s.inertia)?,
             momentum: vec3("initial.momentum", &init.momentum)?,
             attitude: attitude3(&init.attitude)?,
+            forces: None,
         })),
         SystemKind::HeavyTop => {
             let mass = mass()?;
@@ -1168,6 +1334,7 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
                 gravity: g,
                 momentum: vec3("initial.momentum", &init.momentum)?,
                 attitude: attitude3(&init.attitude)?,
+                forces: None,
             }))
         }
         SystemKind::RigidBodySe3 => {

@@ -8,10 +8,12 @@
 
 use crate::error::SimError;
 use crate::scene::{
-    inapplicable, GeodesicSoN, Method, MethodSpec, SolverChoice, SolverOptions, System, TauKind,
+    inapplicable, Forces, GeodesicSoN, Method, MethodSpec, SolverChoice, SolverOptions, System,
+    TauKind,
 };
 use faer::{Col, Mat};
 use integrators::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
+use integrators::forces::{BodyTorque, Forced, LinearDamping};
 use integrators::modified::ModifiedLiePoisson;
 use integrators::splitting::{KineticFlow, KineticKick, SplitSystem, Splitting, SplittingScheme};
 use integrators::systems::{
@@ -177,6 +179,14 @@ pub fn dispatch<J: Job>(
     match system {
         System::FreeRigidBody(p) => {
             let body = RigidBody::new(p.inertia).map_err(built)?;
+            if let Some(f) = &p.forces {
+                let forced = Forced::new(body, scene_force(f).map_err(built)?);
+                return job
+                    .run(forced, p.momentum, so3(&p.attitude)?, |s, mu, g| {
+                        b.make_forced(s, mu, g)
+                    })
+                    .map_err(built);
+            }
             job.run(body, p.momentum, so3(&p.attitude)?, |s, mu, g| {
                 b.make_rigid_body(s, mu, g)
             })
@@ -185,6 +195,14 @@ pub fn dispatch<J: Job>(
         System::HeavyTop(p) => {
             let top = HeavyTopSystem::new(p.inertia, p.mass, p.gravity, p.center_of_mass)
                 .map_err(built)?;
+            if let Some(f) = &p.forces {
+                let forced = Forced::new(top, scene_force(f).map_err(built)?);
+                return job
+                    .run(forced, p.momentum, so3(&p.attitude)?, |s, mu, g| {
+                        b.make_forced(s, mu, g)
+                    })
+                    .map_err(built);
+            }
             job.run(top, p.momentum, so3(&p.attitude)?, |s, mu, g| {
                 b.make_heavy_top(s, mu, g)
             })
@@ -467,6 +485,23 @@ impl Builder {
         }
     }
 
+    /// A forced system on SO(3): Lie–Poisson, Euler–Poincaré, RK4 or RKMK4 (the methods that
+    /// take external forces; the others are refused by [`inapplicable`] before).
+    fn make_forced<S>(
+        &self,
+        system: S,
+        mu0: Vector3<f64>,
+        g0: Option<So3>,
+    ) -> Result<Boxed<So3>, IntegratorError>
+    where
+        S: integrators::System<So3> + 'static,
+    {
+        match self.method.method {
+            Method::Rk4 => Ok(Boxed::new(QuaternionRk4::new(system, mu0, g0)?)),
+            _ => self.make(system, mu0, g0),
+        }
+    }
+
     /// As [`Builder::make_split`], plus RK4 on (quaternion, Π) for systems on SO(3).
     fn make_so3<S>(
         &self,
@@ -482,6 +517,17 @@ impl Builder {
             _ => self.make_split(system, mu0, g0),
         }
     }
+}
+
+/// The `[forces]` of a scene on SO(3): body torque schedule u(t) plus damping `−D Ω`, each
+/// optional.
+type SceneForce = (Option<BodyTorque<So3>>, Option<LinearDamping<So3>>);
+
+fn scene_force(f: &Forces) -> Result<SceneForce, IntegratorError> {
+    Ok((
+        f.torque.clone().map(BodyTorque::new).transpose()?,
+        f.damping.map(LinearDamping::new).transpose()?,
+    ))
 }
 
 /// The Euler–Arnold system of a purely kinetic system S: l(ξ) = ½⟨𝕀ξ, ξ⟩ with

@@ -249,7 +249,7 @@ pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
         let mut sim = build(&scene.system, m, scene.reconstruct, &scene.solver)?;
         Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
     };
-    if matches!(scene.system, System::FreeRigidBody(_)) {
+    if matches!(scene.system, System::FreeRigidBody(_)) && scene.system.forces().is_none() {
         let m = MethodSpec::plain(Method::Exact, None);
         let fine = run(&m, scene.duration)?;
         let coarse = run(&m, h_min)?;

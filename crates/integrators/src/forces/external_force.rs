@@ -8,7 +8,8 @@ use lie_groups::{LieGroup, Vector};
 ///
 /// Closures `Fn(f64, Option<&G>, &G::Algebra) -> G::Algebra` are forces that may read g (they
 /// declare [`Self::needs_configuration`], so g is reconstructed and passed); a pair `(a, b)` is the
-/// sum of two forces.
+/// sum of two forces; an `Option` is the force when `Some` and zero when `None` (optional terms of a
+/// configured force, e.g. `(Option<BodyTorque<G>>, Option<LinearDamping<G>>)`).
 pub trait ExternalForce<G: LieGroup> {
     /// `F_ext(t, g, ξ)`; `g` is `None` when the run does not reconstruct the configuration (only
     /// allowed when [`Self::needs_configuration`] is false).
@@ -40,5 +41,19 @@ impl<G: LieGroup, A: ExternalForce<G>, B: ExternalForce<G>> ExternalForce<G> for
     }
     fn needs_configuration(&self) -> bool {
         self.0.needs_configuration() || self.1.needs_configuration()
+    }
+}
+
+/// A force that may be absent: `F_ext` when `Some`, zero when `None`.
+impl<G: LieGroup, F: ExternalForce<G>> ExternalForce<G> for Option<F> {
+    fn force(&self, t: f64, g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
+        match self {
+            Some(f) => f.force(t, g, xi),
+            None => G::Algebra::zeros(xi.dim()),
+        }
+    }
+    fn needs_configuration(&self) -> bool {
+        self.as_ref()
+            .is_some_and(ExternalForce::needs_configuration)
     }
 }

@@ -58,6 +58,10 @@ impl Schedule {
     pub fn dim(&self) -> usize {
         self.values[0].len()
     }
+    /// The number of knots (1 for a constant).
+    pub fn knots(&self) -> usize {
+        self.times.len()
+    }
     /// `u(t)` into `out` (length [`Self::dim`]); no allocation.
     pub fn eval_into(&self, t: f64, out: &mut [f64]) {
         let n = self.times.len();
