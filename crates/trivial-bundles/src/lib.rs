@@ -10,7 +10,9 @@
 //!   from the canonical structure `u_g v_h = (u h + g v)_{gh}` ([`trivialization`]).
 //! - [`CotangentBundle<G>`]: `(g, μ)(h, ν) = (gh, Ad*_h μ + ν)`, `(g, μ)⁻¹ = (g⁻¹, −Ad*_{g⁻¹} μ)`,
 //!   with `Ad*_g := (Ad_g)ᵀ` the dual map (the paper's `Ad*_{h⁻¹}` denotes the coadjoint action,
-//!   the same map; see `NOTES.md`, slip 1).
+//!   the same map; see `NOTES.md`, slip 1). The left trivialization
+//!   `tr_T*G(p_g) = (g, T*_e L_g p)` is a group isomorphism from the canonical structure
+//!   `p_g q_h = (p h⁻ᵀ + g⁻ᵀ q)_{gh}` of covectors paired by `tr(pᵀu)` ([`trivialization`]).
 //!
 //! Both implement [`lie_groups::LieGroup`] (algebra coordinates [`Pair`], block operators, faithful
 //! block-matrix representations), so they pass the same generic suite as every other group.
