@@ -6,7 +6,8 @@
 //! - `trade/free_body`: 𝕀 = diag(1, 2, 3), Π₀ = (0.5, 1, 0.2), R₀ given, h = 0.01: hand-written
 //!   RK4, `QuaternionRk4`, `Rkmk4`, Strang of the principal-axis rotations, the exact flow as a
 //!   method (`ExactFreeBody`), each with the attitude (`+g`); Π alone (`-g`) for RK4, Strang and
-//!   the exact flow.
+//!   the exact flow; the implicit Lie–Poisson step (Cayley, θ = ½ and 0, `+g`) for the issue's
+//!   ratio against the hand-written RK4.
 //! - `trade/exact_flow`: one call of `FreeBodyFlow::advance` to T = 1, 10, 1000 (its cost does
 //!   not grow with T), with and without R.
 //! - `trade/heavy_top`: an asymmetric top 𝕀 = diag(1, 2, 3), mgχ = (0, 0.1, 0.5), h = 0.01:
@@ -23,8 +24,8 @@ use integrators::baselines::{QuaternionRk4, Rkmk4};
 use integrators::exact::{ExactFreeBody, FreeBodyFlow};
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
 use integrators::systems::{HeavyTop, RigidBody};
-use integrators::Integrator;
-use lie_groups::{LieGroup, So3};
+use integrators::{Integrator, LiePoisson};
+use lie_groups::{Cayley, LieGroup, So3};
 use nalgebra::{Quaternion, Vector3};
 use std::hint::black_box;
 
@@ -108,6 +109,10 @@ fn free_body(c: &mut Criterion) {
     }
     let rkmk = Rkmk4::new(body.clone(), pi0, Some(g0())).unwrap();
     bench_step(&mut group, "rkmk4+g", rkmk);
+    for theta in [0.5, 0.0] {
+        let lp = LiePoisson::<So3, Cayley, _>::new(body.clone(), theta, pi0, Some(g0())).unwrap();
+        bench_step(&mut group, &format!("lp/cayley/{theta}+g"), lp);
+    }
     group.finish();
 
     let mut group = c.benchmark_group("trade/exact_flow");

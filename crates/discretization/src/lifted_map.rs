@@ -58,6 +58,11 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
     fn base_point(&self, gk: &G, eta: &G::Algebra) -> G;
     /// The second point `R̃_d(ḡ, η)₂ = g_{k+1}`.
     fn second_point(&self, gbar: &G, eta: &G::Algebra) -> G;
+    /// `g_{k+1}` from g_k directly, `second_point(base_point(g_k, η), η)`, for a step that needs
+    /// no ḡ; maps override it with a single product where they can.
+    fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
+        self.second_point(&self.base_point(gk, eta), eta)
+    }
     /// Whether η lies where the map can be inverted (the step's R̃_d⁻¹ recovers η); an error names
     /// why not.
     fn check_domain(&self, eta: &G::Algebra) -> Result<(), DiscretizationError>;
@@ -122,6 +127,11 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     fn second_point(&self, gbar: &G, eta: &G::Algebra) -> G {
         T::compose_tau(gbar, &eta.scale(1.0 - self.theta())).normalize()
     }
+    /// `g_{k+1} = g_k τ(θη) τ((1−θ)η)` in one product (`Tau::compose_tau_split`), renormalized.
+    #[inline]
+    fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
+        T::compose_tau_split(gk, self.theta(), eta).normalize()
+    }
     /// `τ⁻¹(τ(η)) = η` to `1e-8 (1 + ‖η‖)`; skipped inside `Tau::INVERTIBLE_RADIUS`.
     #[inline]
     fn check_domain(&self, eta: &G::Algebra) -> Result<(), DiscretizationError> {
@@ -153,12 +163,16 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
         let transported = mu_k.add(&carried);
         let d = match nu {
             Some(nu) => carried.add(nu),
-            None => carried,
+            None => carried.clone(),
         };
+        // θ = ½: both factors are τ(η/2), so δ_{(1−θ)η}(μ_k) is `carried` (bitwise).
         let eb = eta.scale(1.0 - th);
-        let increment = d
-            .add(&T::tau_coadjoint_increment(&eb, mu_k))
-            .add(&T::tau_coadjoint_increment(&eb, &d));
+        let second = if th == 0.5 {
+            carried
+        } else {
+            T::tau_coadjoint_increment(&eb, mu_k)
+        };
+        let increment = d.add(&second).add(&T::tau_coadjoint_increment(&eb, &d));
         MomentumUpdate {
             transported,
             next: mu_k.add(&increment),

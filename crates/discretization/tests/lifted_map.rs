@@ -28,6 +28,15 @@ fn check_cotangent_pieces<G: LieGroup, T: Tau<G>>(
     let gk = G::exp(a);
     let gbar = m.base_point(&gk, eta);
     let g1 = m.second_point(&gbar, eta);
+    // the fused g_{k+1} from g_k, against the plain product of τ's matrices
+    let plain_g1 = gk
+        .compose(&T::tau(&eta.scale(theta)))
+        .compose(&T::tau(&eta.scale(1.0 - theta)));
+    assert_small(
+        "next_point = g_k τ(θη) τ((1−θ)η)",
+        m.next_point(&gk, eta).matrix_distance(&plain_g1),
+        1e-13 * (1.0 + eta.norm()),
+    );
     let up = m.momentum_update(eta, mu, Some(nu));
     let bar = m.base_momentum(eta, mu, &up.next);
     let s = 1.0 + eta.norm() + mu.norm() + nu.norm();
@@ -181,6 +190,30 @@ lifted_map_suite!(se2_exp, Se2, ExpMap, false);
 lifted_map_suite!(se2_cayley, Se2, Cayley, false);
 lifted_map_suite!(so4_exp, SoN<4>, ExpMap, false);
 lifted_map_suite!(so4_cayley, SoN<4>, Cayley, false);
+
+/// SO(3)'s one-product `g cay(θη) cay((1−θ)η) = g cay(η/(1 − θ(1−θ)|η|²/4))` on both sides of
+/// the switch to two products (denominator ½): total angles up to and beyond a half turn, every θ.
+#[test]
+fn so3_cayley_split_compose_is_the_product_of_the_two_factors() {
+    use lie_groups::{CayleyGroup, So3};
+    use nalgebra::Vector3;
+    let g = So3::exp(&Vector3::new(0.4, -1.1, 0.7));
+    let axis = Vector3::new(0.3, -0.5, 0.8).normalize();
+    for theta in [0.0, 0.2, 0.5, 0.9, 1.0] {
+        for size in [0.0, 1e-9, 0.01, 1.0, 2.5, 2.9, 3.0, 4.0, 7.0, 40.0] {
+            let w = axis * size;
+            let two = g
+                .compose(&So3::cay(&(w * theta)))
+                .compose(&So3::cay(&(w * (1.0 - theta))));
+            let one = So3::cay_split_compose(&g, theta, &w);
+            assert_small(
+                &format!("θ = {theta}, |η| = {size}"),
+                one.matrix_distance(&two),
+                2e-15 * (1.0 + size),
+            );
+        }
+    }
+}
 
 /// The domain check: exp on SO(3) inverts below a half turn only; NaN is outside.
 #[test]

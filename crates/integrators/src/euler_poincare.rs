@@ -29,6 +29,7 @@
 use crate::lie_poisson::{check_state, check_theta, step_too_large};
 use crate::solver::solve;
 use crate::system::force;
+use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
 use discretization::{DiscretizationMap, LiftedMap};
 use lie_groups::{LieGroup, Operator, Vector};
@@ -66,6 +67,10 @@ pub struct TangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     xi: G::Algebra,
     g: Option<G>,
     iterations: usize,
+    /// Jacobians evaluated by the last successful step.
+    jacobians: usize,
+    /// Past solutions and the Newton matrix, for the next step of the same size.
+    warm: WarmStart<G>,
 }
 
 impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> {
@@ -87,6 +92,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             xi: xi0,
             g: g0,
             iterations: 0,
+            jacobians: 0,
+            warm: WarmStart::default(),
         })
     }
     /// Builds the integrator from the momentum μ₀ (ξ₀ = ∂h/∂μ(μ₀)).
@@ -103,6 +110,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     /// Replaces the solver configuration.
     pub fn with_solver(mut self, config: SolverConfig) -> Self {
         self.config = config;
+        self.warm.clear();
         self
     }
     /// Resets the state to (t, ξ, g), with the checks of [`EulerPoincare::new`].
@@ -114,6 +122,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
         self.t = t;
         self.xi = xi;
         self.g = g;
+        self.warm.clear();
         Ok(())
     }
     /// The system.
@@ -131,6 +140,11 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     /// Solver iterations used by the last successful step (0 for θ = 0 or before the first).
     pub fn last_iterations(&self) -> usize {
         self.iterations
+    }
+    /// Jacobians of the step equations evaluated by the last successful step: 1 for a cold
+    /// start, 0 once the [`WarmStart`] matrix of earlier steps of the same size serves.
+    pub fn last_jacobians(&self) -> usize {
+        self.jacobians
     }
 
     /// `f(t, g, ξ) = ∂²h/∂μ² (ad*_ξ μ + F(g) + F_ext(t, g, ξ))`, μ = ∂l/∂ξ: the Euler–Poincaré
@@ -185,19 +199,28 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let theta = self.theta();
-        let (xi, iterations) = if theta == 0.0 {
-            (self.xi.clone(), 0)
+        let (xi, iterations, jacobians, chord, contraction) = if theta == 0.0 {
+            (self.xi.clone(), 0, 0, None, 0.0)
         } else {
+            let chord = self.warm.take_chord(h);
             let evaluate = |xi: &G::Algebra| Ok((self.residual(h, xi), ()));
             // Predictor ξ⁰ = ξ_k + θh f(g_k, ξ_k): r(ξ) = ξ − ξ_k − θh f + O(h²) at ξ = ξ_k + O(h),
             // so ξ⁰ is within O(h²) of the solution (ξ_k alone is O(h)).
-            let guess = self
-                .xi
-                .axpy(theta * h, &self.field(self.t, self.g.as_ref(), &self.xi));
-            let solution = solve::<G, ()>(&self.config, h, guess, evaluate, |xi, _| {
+            // After four steps of this size: the WarmStart extrapolation, O(h⁴) relative.
+            let guess = self.warm.predict(h).unwrap_or_else(|| {
+                self.xi
+                    .axpy(theta * h, &self.field(self.t, self.g.as_ref(), &self.xi))
+            });
+            let solution = solve::<G, ()>(&self.config, h, guess, chord, evaluate, |xi, _| {
                 self.jacobian(h, xi)
             })?;
-            (solution.xi, solution.iterations)
+            (
+                solution.xi,
+                solution.iterations,
+                solution.jacobians,
+                solution.chord,
+                solution.contraction,
+            )
         };
         let eta = xi.scale(h);
         if self.config.check_domain {
@@ -228,6 +251,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         self.g = g1;
         self.t += h;
         self.iterations = iterations;
+        self.jacobians = jacobians;
+        self.warm.record(h, &xi, chord, contraction);
         Ok(())
     }
     fn time(&self) -> f64 {

@@ -84,6 +84,7 @@ pub mod solver;
 pub mod splitting;
 mod system;
 pub mod systems;
+pub mod warm_start;
 
 pub use baselines::{QuaternionRk4, Rkmk4};
 pub use compose::{Composition, CompositionScheme, StateSnapshot, SymmetricMethod};
@@ -94,3 +95,4 @@ pub use integrator::{integrate, Integrator, MethodInfo};
 pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};
 pub use system::System;
+pub use warm_start::WarmStart;

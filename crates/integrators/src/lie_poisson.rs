@@ -38,6 +38,7 @@
 
 use crate::solver::{solve, Solution};
 use crate::system::force;
+use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
 use discretization::{DiscretizationError, DiscretizationMap, LiftedMap, MomentumUpdate};
 use lie_groups::{LieGroup, Operator, Vector};
@@ -79,6 +80,10 @@ pub struct CotangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     mu_err: G::Algebra,
     g: Option<G>,
     iterations: usize,
+    /// Jacobians evaluated by the last successful step.
+    jacobians: usize,
+    /// Past solutions and the Newton matrix, for the next step of the same size.
+    warm: WarmStart<G>,
 }
 
 /// A map's domain error as the integrator's [`IntegratorError::StepTooLarge`].
@@ -147,11 +152,14 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             mu: mu0,
             g: g0,
             iterations: 0,
+            jacobians: 0,
+            warm: WarmStart::default(),
         })
     }
     /// Replaces the solver configuration.
     pub fn with_solver(mut self, config: SolverConfig) -> Self {
         self.config = config;
+        self.warm.clear();
         self
     }
     /// Resets the state to (t, μ, g), with the checks of [`LiePoisson::new`].
@@ -164,6 +172,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         self.mu = mu;
         self.mu_err = G::Algebra::zeros(G::dim());
         self.g = g;
+        self.warm.clear();
         Ok(())
     }
     /// Sets the time alone (the compensation of μ kept).
@@ -189,6 +198,11 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// Solver iterations used by the last successful step (0 before the first).
     pub fn last_iterations(&self) -> usize {
         self.iterations
+    }
+    /// Jacobians of the step equations evaluated by the last successful step: 1 for a cold
+    /// start, 0 once the [`WarmStart`] matrix of earlier steps of the same size serves.
+    pub fn last_jacobians(&self) -> usize {
+        self.jacobians
     }
 
     /// For a trial ξ (= η, the step's algebra vector): the impulse `ν = h F(ḡ)` at the base
@@ -258,17 +272,18 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         self.system.velocity(&mid).scale(h)
     }
 
-    /// Solves `r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) = 0` from the [`Self::predictor`].
-    fn solve_velocity(
-        &self,
-        h: f64,
-    ) -> Result<Solution<G::Algebra, Evaluation<G>>, IntegratorError> {
+    /// Solves `r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) = 0` from the [`WarmStart`] extrapolation of the last
+    /// solutions and their Newton matrix when the last steps had size h, else from the
+    /// [`Self::predictor`].
+    fn solve_velocity(&mut self, h: f64) -> Result<StepSolution<G>, IntegratorError> {
+        let guess = self.warm.predict(h).unwrap_or_else(|| self.predictor(h));
+        let chord = self.warm.take_chord(h);
         let evaluate = |xi: &G::Algebra| {
             let ev = self.evaluate(h, xi);
             Ok((xi.sub(&self.system.velocity(&ev.bar).scale(h)), ev))
         };
         let jacobian = |xi: &G::Algebra, ev: &Evaluation<G>| self.jacobian(h, xi, ev);
-        solve::<G, _>(&self.config, h, self.predictor(h), evaluate, jacobian)
+        solve::<G, _>(&self.config, h, guess, chord, evaluate, jacobian)
     }
 
     /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ:
@@ -280,6 +295,9 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         G::Operator::identity(G::dim()).add(&self.system.hessian(&ev.bar).compose(&dbar).scale(-h))
     }
 }
+
+/// The solver's result for one step: ξ, the last [`Evaluation`] and the Newton matrix.
+type StepSolution<G> = Solution<<G as LieGroup>::Algebra, Evaluation<G>, <G as LieGroup>::Operator>;
 
 /// The quantities of one evaluation of the step map at a trial ξ, shared by the residual and
 /// the Newton Jacobian at the same ξ.
@@ -317,10 +335,10 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
                 what: "momentum μ_{k+1}",
             });
         }
-        // g_{k+1}: the second point of R̃_d(ḡ, ξ), ḡ the base point over g_k.
+        // g_{k+1}: the second point of R̃_d(ḡ, ξ), ḡ the base point over g_k (in one product).
         let g1 = match self.g.as_ref() {
             Some(gk) => {
-                let g1 = self.map.second_point(&self.map.base_point(gk, &xi), &xi);
+                let g1 = self.map.next_point(gk, &xi);
                 if !g1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration g_{k+1}",
@@ -335,6 +353,9 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         self.g = g1;
         self.t += h;
         self.iterations = solution.iterations;
+        self.jacobians = solution.jacobians;
+        self.warm
+            .record(h, &xi, solution.chord, solution.contraction);
         Ok(())
     }
     fn time(&self) -> f64 {
@@ -396,7 +417,7 @@ mod tests {
         g0: Option<So3>,
         h: f64,
     ) -> f64 {
-        let lp =
+        let mut lp =
             LiePoisson::<So3, T, _>::new(system.clone(), theta, Vector3::new(0.5, 1.0, 0.2), g0)
                 .unwrap();
         let solved = lp.solve_velocity(h).unwrap().xi;

@@ -75,7 +75,9 @@ fn planar_body_refuses_bad_parameters() {
 
 #[test]
 fn free_planar_body_moves_uniformly() {
-    // Free: L is constant to round-off (the first component of ad*_ξ μ vanishes for v ∥ P); the
+    // Free: L is constant to round-off (the first component of ad*_ξ μ vanishes for v ∥ P; v is
+    // parallel to P up to the rounding of the solver's warm-start extrapolation, so L follows a
+    // walk of roundings: measured 2.6e-15 over 400 steps, bounded by 1e-14); the
     // spatial momentum R P is constant to
     // round-off (bound 1e-12 over 400 steps); the centre of mass deviates from x₀ + t v₀ by O(h²) (the translation of τ(ξ)
     // is turned by ~hω/2 relative to h v): measured and bounded by 5e-2 at hω = 0.075 over t = 20.
@@ -96,7 +98,7 @@ fn free_planar_body_moves_uniformly() {
         println!("free planar θ={theta}: |Δ(RP)| {dp:.2e}, |x − (x₀ + t v₀)| {dx:.2e}");
         assert!(dp < 1e-12, "θ={theta}: {dp:e}");
         assert!(dx < 5e-2, "θ={theta}: {dx:e}");
-        assert!(dl < 1e-15, "θ={theta}: ΔL {dl:e}");
+        assert!(dl < 1e-14, "θ={theta}: ΔL {dl:e}");
     }
 }
 

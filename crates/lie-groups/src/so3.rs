@@ -755,6 +755,19 @@ impl CayleyGroup for So3 {
             r: g.r + g.r * rodrigues_increment(w, a, 0.5 * a),
         }
     }
+    /// `R cay(θω) cay((1−θ)ω) = R cay(ω / (1 − θ(1−θ)|ω|²/4))`: cay(ω) is the rotation with Gibbs
+    /// vector ω/2, and Gibbs vectors compose as `(a + b + a × b)/(1 − a·b)` (the cross term
+    /// vanishing for parallel ones). Used while the denominator is at least ½ (a total angle up to
+    /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products.
+    #[inline]
+    fn cay_split_compose(g: &Self, theta: f64, w: &Vector3<f64>) -> Self {
+        let den = 1.0 - theta * (1.0 - theta) * w.norm_squared() * 0.25;
+        if den >= 0.5 {
+            Self::cay_compose(g, &(w / den))
+        } else {
+            Self::cay_compose(&Self::cay_compose(g, &(w * theta)), &(w * (1.0 - theta)))
+        }
+    }
     /// `cay⁻¹(R) = 2 vee(R − Rᵀ)/(1 + tr R)` (the closed form of `2 (R − I)(R + I)⁻¹`); an error
     /// where `1 + tr R ≤ 1e-14`, i.e. at rotations by π, where R + I is singular.
     fn cay_inv(&self) -> Result<Vector3<f64>, LieError> {

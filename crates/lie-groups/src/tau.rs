@@ -54,6 +54,16 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     fn compose_tau(g: &G, xi: &G::Algebra) -> G {
         g.compose(&Self::tau(xi))
     }
+    /// `g τ(θξ) τ((1−θ)ξ)`, the two factors of a discretization map's step in one product where
+    /// τ allows it: for exp the product is `g exp(ξ)` (a one-parameter subgroup), for the Cayley
+    /// map of SO(3) `g cay(ξ / (1 − θ(1−θ)|ξ|²/4))` (parallel Gibbs vectors compose by the tangent
+    /// addition formula); otherwise the two products.
+    fn compose_tau_split(g: &G, theta: f64, xi: &G::Algebra) -> G {
+        Self::compose_tau(
+            &Self::compose_tau(g, &xi.scale(theta)),
+            &xi.scale(1.0 - theta),
+        )
+    }
     /// `d^{L*} τ_ξ μ = (d^L τ_ξ)ᵀ μ`.
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         Self::dtau_left(xi).apply_transpose(mu)
@@ -105,6 +115,11 @@ impl<G: LieGroup> Tau<G> for ExpMap {
     fn compose_tau(g: &G, xi: &G::Algebra) -> G {
         G::exp_compose(g, xi)
     }
+    /// `g exp(θξ) exp((1−θ)ξ) = g exp(ξ)`.
+    #[inline]
+    fn compose_tau_split(g: &G, _theta: f64, xi: &G::Algebra) -> G {
+        G::exp_compose(g, xi)
+    }
     #[inline]
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         G::dexp_left_dual_apply(xi, mu)
@@ -143,6 +158,14 @@ pub trait CayleyGroup: LieGroup {
     /// `g cay ξ`; groups override it with the increment form of [`LieGroup::exp_compose`].
     fn cay_compose(g: &Self, xi: &Self::Algebra) -> Self {
         g.compose(&Self::cay(xi))
+    }
+    /// `g cay(θξ) cay((1−θ)ξ)`; groups with a composition formula for parallel arguments override
+    /// it (SO(3)).
+    fn cay_split_compose(g: &Self, theta: f64, xi: &Self::Algebra) -> Self {
+        Self::cay_compose(
+            &Self::cay_compose(g, &xi.scale(theta)),
+            &xi.scale(1.0 - theta),
+        )
     }
     /// `d^{L*}cay_ξ μ = (d^L cay_ξ)ᵀ μ`. The provided form builds d^L cay_ξ; groups override it
     /// with a closed form that skips the operator.
@@ -189,6 +212,10 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     #[inline]
     fn compose_tau(g: &G, xi: &G::Algebra) -> G {
         G::cay_compose(g, xi)
+    }
+    #[inline]
+    fn compose_tau_split(g: &G, theta: f64, xi: &G::Algebra) -> G {
+        G::cay_split_compose(g, theta, xi)
     }
     #[inline]
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
