@@ -56,10 +56,13 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
 
     /// The base point ḡ of `R̃_d(ḡ, η)` whose first point is g_k.
     fn base_point(&self, gk: &G, eta: &G::Algebra) -> G;
-    /// The second point `R̃_d(ḡ, η)₂ = g_{k+1}`.
+    /// The second point `R̃_d(ḡ, η)₂ = g_{k+1}`, not renormalized onto the group.
     fn second_point(&self, gbar: &G, eta: &G::Algebra) -> G;
-    /// `g_{k+1}` from g_k directly, `second_point(base_point(g_k, η), η)`, for a step that needs
-    /// no ḡ; maps override it with a single product where they can.
+    /// `g_{k+1}` from g_k directly, `second_point(base_point(g_k, η), η)` up to round-off, for a
+    /// step that needs no ḡ; maps override it with a single product where they can. Like
+    /// [`Self::second_point`] it is not renormalized onto the group: the caller decides how often
+    /// (renormalizing every step rounds g twice per step, with a bias the momentum map
+    /// accumulates).
     fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
         self.second_point(&self.base_point(gk, eta), eta)
     }
@@ -122,15 +125,16 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             T::compose_tau(gk, &eta.scale(th))
         }
     }
-    /// `g_{k+1} = ḡ τ((1−θ)η)`, renormalized onto the group.
+    /// `g_{k+1} = ḡ τ((1−θ)η)` (in increment form, not renormalized).
     #[inline]
     fn second_point(&self, gbar: &G, eta: &G::Algebra) -> G {
-        T::compose_tau(gbar, &eta.scale(1.0 - self.theta())).normalize()
+        T::compose_tau(gbar, &eta.scale(1.0 - self.theta()))
     }
-    /// `g_{k+1} = g_k τ(θη) τ((1−θ)η)` in one product (`Tau::compose_tau_split`), renormalized.
+    /// `g_{k+1} = g_k τ(θη) τ((1−θ)η)` in one product (`Tau::compose_tau_split`), not
+    /// renormalized.
     #[inline]
     fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
-        T::compose_tau_split(gk, self.theta(), eta).normalize()
+        T::compose_tau_split(gk, self.theta(), eta)
     }
     /// `τ⁻¹(τ(η)) = η` to `1e-8 (1 + ‖η‖)`; skipped inside `Tau::INVERTIBLE_RADIUS`.
     #[inline]

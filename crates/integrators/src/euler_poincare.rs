@@ -26,6 +26,7 @@
 //! θ = 0 is explicit (ξ = ξ_k, ḡ = g_k). The state is (g, ξ); its momentum is μ = ∂l/∂ξ.
 //! Unlike the Lie–Poisson integrator, this one does not keep μ on its coadjoint orbit.
 
+use crate::lie_poisson::RENORMALIZE_EVERY;
 use crate::lie_poisson::{check_state, check_theta, step_too_large};
 use crate::solver::solve;
 use crate::system::force;
@@ -69,6 +70,8 @@ pub struct TangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     iterations: usize,
     /// Jacobians evaluated by the last successful step.
     jacobians: usize,
+    /// Steps since g was last renormalized onto the group.
+    unnormalized: u32,
     /// Past solutions and the Newton matrix, for the next step of the same size.
     warm: WarmStart<G>,
 }
@@ -93,6 +96,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             g: g0,
             iterations: 0,
             jacobians: 0,
+            unnormalized: 0,
             warm: WarmStart::default(),
         })
     }
@@ -123,6 +127,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
         self.xi = xi;
         self.g = g;
         self.warm.clear();
+        self.unnormalized = 0;
         Ok(())
     }
     /// The system.
@@ -161,10 +166,14 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
         self.system.hessian(&mu).apply(&rhs)
     }
 
-    /// The base point ḡ over g_k of `R̃_d(ḡ, hξ)` (when g is reconstructed).
+    /// The base point ḡ over g_k of `R̃_d(ḡ, hξ)`, formed only when g is reconstructed and the
+    /// field reads it.
     fn base(&self, h: f64, xi: &G::Algebra) -> Option<G> {
         let eta = xi.scale(h);
-        self.g.as_ref().map(|gk| self.map.base_point(gk, &eta))
+        self.g
+            .as_ref()
+            .filter(|_| self.system.needs_configuration())
+            .map(|gk| self.map.base_point(gk, &eta))
     }
 
     /// r(ξ) = ξ_k-component of `R̃_d^T(ḡ, ξ, hξ, h f(ḡ, ξ))` − ξ_k
@@ -235,9 +244,16 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                 what: "velocity ξ_{k+1}",
             });
         }
-        let g1 = match gbar {
-            Some(gb) => {
-                let g1 = self.map.second_point(&gb, &eta);
+        // g_{k+1} from ḡ when it was formed, else in one product from g_k; renormalized every
+        // RENORMALIZE_EVERY steps (see there).
+        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
+        let g1 = match self.g.as_ref() {
+            Some(gk) => {
+                let g1 = match &gbar {
+                    Some(gb) => self.map.second_point(gb, &eta),
+                    None => self.map.next_point(gk, &eta),
+                };
+                let g1 = if renormalize { g1.normalize() } else { g1 };
                 if !g1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration g_{k+1}",
@@ -252,6 +268,11 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         self.t += h;
         self.iterations = iterations;
         self.jacobians = jacobians;
+        self.unnormalized = if renormalize {
+            0
+        } else {
+            self.unnormalized + 1
+        };
         self.warm.record(h, &xi, chord, contraction);
         Ok(())
     }

@@ -231,8 +231,9 @@ fn solver_kinds_agree() {
 }
 
 /// The reconstructed attitude stays on SO(3) to round-off over 10⁷ steps (free body, h = 0.01,
-/// Lie–Poisson Cayley θ = ½): ‖RᵀR − I‖_max ≤ 1e-15. Without the per-step `normalize` the
-/// round-off random walk reaches ~1e-12 (docs/long-runs.md). Release mode: ~15 s.
+/// Lie–Poisson Cayley θ = ½): ‖RᵀR − I‖_max ≤ 1e-14 (renormalized every `RENORMALIZE_EVERY` =
+/// 1024 steps, the defect in between is a random walk of at most 1024 roundings; measured
+/// 1.4e-15). Without renormalization the random walk reaches ~1e-12 (docs/long-runs.md).
 #[test]
 fn attitude_stays_orthogonal_to_round_off_over_1e7_steps() {
     let mut lp = LiePoisson::<So3, Cayley, _>::new(
@@ -251,7 +252,7 @@ fn attitude_stays_orthogonal_to_round_off_over_1e7_steps() {
     }
     let r = lp.configuration().unwrap().as_matrix();
     let orth = (r.transpose() * r - Matrix3::identity()).amax();
-    assert!(orth <= 1e-15, "‖RᵀR − I‖ = {orth:.2e} after 10⁷ steps");
+    assert!(orth <= 1e-14, "‖RᵀR − I‖ = {orth:.2e} after 10⁷ steps");
 }
 
 /// On SO(3) the Newton Jacobian of the Lie–Poisson step is exact (closed forms of
