@@ -159,10 +159,11 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
         nu: Option<&G::Algebra>,
     ) -> MomentumUpdate<G::Algebra> {
         let th = self.theta();
+        let xa = eta.scale(th);
         let carried = if th == 0.0 {
             G::Algebra::zeros(G::dim())
         } else {
-            T::tau_coadjoint_increment(&eta.scale(th), mu_k)
+            T::tau_coadjoint_increment(&xa, mu_k)
         };
         let transported = mu_k.add(&carried);
         let d = match nu {
@@ -170,7 +171,8 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             None => carried.clone(),
         };
         // θ = ½: both factors are τ(η/2), so δ_{(1−θ)η}(μ_k) is `carried` (bitwise).
-        let eb = eta.scale(1.0 - th);
+        // (θ = ½: the same vector as xa, so the compiler shares τ's coefficients.)
+        let eb = if th == 0.5 { xa } else { eta.scale(1.0 - th) };
         let second = if th == 0.5 {
             carried
         } else {
