@@ -33,7 +33,9 @@
 //! and `docs/work-precision.md` of the repository.
 //!
 //! A system is anything implementing [`System`] (reduced Hamiltonian h(μ), its derivatives, the
-//! Legendre map, an optional potential V(g) and Casimir); [`systems`] holds concrete ones. Every
+//! Legendre map, an optional potential V(g) and Casimir); [`systems`] holds concrete ones, and
+//! [`derivative_check`] compares a hand-written system's derivatives with finite differences (see
+//! docs/custom-systems.md and `examples/custom_system.rs` of the repository). Every
 //! integrator implements [`Integrator`] (step, time, μ, optional g, energy, Casimir), so one generic
 //! function drives any (system, method, τ, θ) combination. Implicit steps are solved by the
 //! iteration chosen in [`SolverConfig`]; a failed step returns an [`IntegratorError`] and leaves the
@@ -71,6 +73,7 @@
 
 pub mod baselines;
 pub mod compose;
+pub mod derivative_check;
 pub mod ensemble;
 mod error;
 pub mod euler_arnold;

@@ -17,6 +17,9 @@ use lie_groups::{LieGroup, Vector};
 
 /// A mechanical system on G with reduced Hamiltonian h(μ) and optional potential V(g).
 ///
+/// To write your own, see docs/custom-systems.md and `examples/custom_system.rs`; check the
+/// derivatives you derived by hand with [`crate::derivative_check::check_derivatives`].
+///
 /// Only the kinetic part lives in 𝔤*: the total energy is `E(g, μ) = h(μ) + V(g)`. A system with
 /// [`System::has_potential`] `== true` needs the configuration g to be integrated (the force depends
 /// on it); without a potential the momentum equation decouples and g is optional.
@@ -26,8 +29,13 @@ pub trait System<G: LieGroup> {
     /// `∂h/∂μ ∈ 𝔤`, the body velocity belonging to μ.
     fn velocity(&self, mu: &G::Algebra) -> G::Algebra;
     /// The Hessian `∂²h/∂μ²: 𝔤* → 𝔤` at μ, as an n×n operator (used by Newton's method and by the
-    /// Euler–Poincaré vector field).
-    fn hessian(&self, mu: &G::Algebra) -> G::Operator;
+    /// Euler–Poincaré vector field). Provided by central differences of [`Self::velocity`]
+    /// ([`crate::derivative_check::finite_difference_hessian`]: 2n velocity evaluations per call,
+    /// accurate to ~1e-10 relative); give the closed form where there is one — it is cheaper, and
+    /// Euler–Poincaré evaluates it in every residual.
+    fn hessian(&self, mu: &G::Algebra) -> G::Operator {
+        crate::derivative_check::finite_difference_hessian(self, mu)
+    }
     /// The Legendre map `ξ ↦ μ = ∂l/∂ξ`, the inverse of `μ ↦ ∂h/∂μ`.
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra;
 
