@@ -27,6 +27,9 @@
 //! - [`forces`]: external forces and controls `F_ext(t, g, ξ)` ([`forces::Forced`], scheduled body
 //!   torques, damping), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
 //!   Lagrange–d'Alembert way (`tests/forces.rs`: orders 2/1/4, exact momentum-map balance).
+//! - [`dense_output`] and [`events`]: the state between steps by a cubic Hermite interpolant on
+//!   G × 𝔤* (`g₀ exp Z(s)`), output at requested times and zero crossings of event functions
+//!   located to a tolerance, for any integrator ([`dense_output::integrate_dense`]).
 //!
 //! Every integrator describes itself ([`Integrator::info`] → [`MethodInfo`]: order, symmetric,
 //! explicit, what it keeps). Which to choose, with measured costs per accuracy: `docs/choosing.md`
@@ -73,11 +76,13 @@
 
 pub mod baselines;
 pub mod compose;
+pub mod dense_output;
 pub mod derivative_check;
 pub mod ensemble;
 mod error;
 pub mod euler_arnold;
 pub mod euler_poincare;
+pub mod events;
 pub mod exact;
 pub mod forces;
 mod integrator;
