@@ -496,6 +496,9 @@ impl<I: StateSnapshot> Integrator for Composition<I> {
     fn velocity(&self) -> <Self::Group as LieGroup>::Algebra {
         self.inner.velocity()
     }
+    fn momentum_rate(&self) -> <Self::Group as LieGroup>::Algebra {
+        self.inner.momentum_rate()
+    }
     fn configuration(&self) -> Option<&Self::Group> {
         self.inner.configuration()
     }

@@ -30,7 +30,7 @@
 //!     Some(So3::identity())).unwrap();
 //! let mut samples = Vec::new();
 //! let stop = Event::new(|_t, mu: &Vector3<f64>, _g| mu.x).direction(Direction::Falling).terminal();
-//! let run = integrate_dense(&mut lp, &top, 0.02, 1000, &[0.125, 1.0, 2.5], |t, mu, _g| {
+//! let run = integrate_dense(&mut lp, 0.02, 1000, &[0.125, 1.0, 2.5], |t, mu, _g| {
 //!     samples.push((t, mu.x));
 //! }, &[stop]).unwrap();
 //! assert_eq!(samples.len(), 3); // output at times between the steps
@@ -59,8 +59,8 @@ pub struct HermiteStep<G: LieGroup> {
 /// Z(1), Z'(0), Z'(1) of the configuration curve `g₀ exp Z(s)`.
 type ConfigurationCurve<G> = [<G as LieGroup>::Algebra; 3];
 
-/// `μ̇ = ad*_ξ μ + F(g) + F_ext(t, g, ξ)`, ξ = ∂h/∂μ.
-fn momentum_rate<G: LieGroup, S: System<G>>(
+/// `μ̇ = ad*_ξ μ + F(g) + F_ext(t, g, ξ)`, ξ = ∂h/∂μ, of `system` at (t, μ, g).
+pub fn momentum_rate<G: LieGroup, S: System<G>>(
     system: &S,
     t: f64,
     mu: &G::Algebra,
@@ -77,29 +77,76 @@ fn momentum_rate<G: LieGroup, S: System<G>>(
     rate
 }
 
+/// A state with what the interpolant needs at a step's end: t, μ, g, ξ = ∂h/∂μ and μ̇.
+#[derive(Debug, Clone)]
+pub struct DenseState<G: LieGroup> {
+    /// Time.
+    pub t: f64,
+    /// Body momentum μ.
+    pub mu: G::Algebra,
+    /// Configuration g, where reconstructed.
+    pub g: Option<G>,
+    /// Body velocity ξ = ∂h/∂μ.
+    pub xi: G::Algebra,
+    /// μ̇ of the equations of motion.
+    pub rate: G::Algebra,
+}
+
+impl<G: LieGroup> DenseState<G> {
+    /// The integrator's current state ([`Integrator::momentum_rate`] gives μ̇).
+    pub fn of<I: Integrator<Group = G>>(integrator: &I) -> Self {
+        Self {
+            t: integrator.time(),
+            mu: integrator.momentum(),
+            g: integrator.configuration().cloned(),
+            xi: integrator.velocity(),
+            rate: integrator.momentum_rate(),
+        }
+    }
+    /// The state (t, μ, g) of `system`.
+    pub fn from_system<S: System<G>>(system: &S, t: f64, mu: &G::Algebra, g: Option<&G>) -> Self {
+        Self {
+            t,
+            mu: mu.clone(),
+            g: g.cloned(),
+            xi: system.velocity(mu),
+            rate: momentum_rate(system, t, mu, g),
+        }
+    }
+}
+
 impl<G: LieGroup> HermiteStep<G> {
     /// The interpolant between the states `(t0, μ0, g0)` and `(t1, μ1, g1)` of `system` (g given
-    /// at both ends or at neither). Errors: t1 = t0, non-finite data, or `g0⁻¹g1` outside the
-    /// domain of log (a step of a half turn or more).
+    /// at both ends or at neither); see [`Self::between`].
     pub fn new<S: System<G>>(
         system: &S,
         (t0, mu0, g0): (f64, &G::Algebra, Option<&G>),
         (t1, mu1, g1): (f64, &G::Algebra, Option<&G>),
     ) -> Result<Self, IntegratorError> {
+        Self::between(
+            &DenseState::from_system(system, t0, mu0, g0),
+            &DenseState::from_system(system, t1, mu1, g1),
+        )
+    }
+
+    /// The interpolant between two states. Errors: t1 = t0 or non-finite, non-finite slopes, g at
+    /// one end only, or `g0⁻¹g1` outside the domain of log (a step of a half turn or more).
+    pub fn between(a: &DenseState<G>, b: &DenseState<G>) -> Result<Self, IntegratorError> {
+        let (t0, t1) = (a.t, b.t);
         let h = t1 - t0;
         if h == 0.0 || !h.is_finite() {
             return Err(IntegratorError::InvalidParameter {
                 reason: format!("a dense-output step needs t1 ≠ t0, finite (got {t0} and {t1})"),
             });
         }
-        let dmu0 = momentum_rate(system, t0, mu0, g0).scale(h);
-        let dmu1 = momentum_rate(system, t1, mu1, g1).scale(h);
+        let dmu0 = a.rate.scale(h);
+        let dmu1 = b.rate.scale(h);
         if !dmu0.is_finite() || !dmu1.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "momentum rate for dense output",
             });
         }
-        let g = match (g0, g1) {
+        let g = match (&a.g, &b.g) {
             (Some(g0), Some(g1)) => {
                 let z1 =
                     g0.inverse()
@@ -109,8 +156,8 @@ impl<G: LieGroup> HermiteStep<G> {
                             step: h,
                             reason: format!("no dense output across this step: {e}"),
                         })?;
-                let dz0 = system.velocity(mu0).scale(h);
-                let dz1 = G::dexp_left_inv(&z1).apply(&system.velocity(mu1).scale(h));
+                let dz0 = a.xi.scale(h);
+                let dz1 = G::dexp_left_inv(&z1).apply(&b.xi.scale(h));
                 if !dz1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration slope for dense output",
@@ -128,8 +175,8 @@ impl<G: LieGroup> HermiteStep<G> {
         Ok(Self {
             t0,
             h,
-            mu0: mu0.clone(),
-            mu1: mu1.clone(),
+            mu0: a.mu.clone(),
+            mu1: b.mu.clone(),
             dmu0,
             dmu1,
             g,
@@ -178,13 +225,13 @@ pub struct DenseRun<G: LieGroup> {
 /// Takes `steps` steps of size h, calling `observe(t, μ, g)` at each of the `times` (sorted in
 /// the direction of integration, within the run) from the step's [`HermiteStep`] interpolant, and
 /// locating the zero crossings of each event ([`crate::events`]) to its tolerance. A terminal event
-/// stops the run after the step in which it occurs. The integrator must integrate `system`.
+/// stops the run after the step in which it occurs. The slopes come from
+/// [`Integrator::momentum_rate`] and [`Integrator::velocity`].
 ///
 /// Errors: unsorted or non-finite `times`, a failed step (the run stops there, the integrator
 /// left at the last good state), or an interpolant that cannot be formed.
-pub fn integrate_dense<I, S>(
+pub fn integrate_dense<I>(
     integrator: &mut I,
-    system: &S,
     h: f64,
     steps: usize,
     times: &[f64],
@@ -193,7 +240,6 @@ pub fn integrate_dense<I, S>(
 ) -> Result<DenseRun<I::Group>, IntegratorError>
 where
     I: Integrator,
-    S: System<I::Group>,
 {
     let forward = h > 0.0;
     if times.iter().any(|t| !t.is_finite())
@@ -220,20 +266,13 @@ where
         .iter()
         .map(|e| e.value(start, &integrator.momentum(), integrator.configuration()))
         .collect();
+    let mut before = DenseState::of(integrator);
     for _ in 0..steps {
-        let (t0, mu0, g0) = (
-            integrator.time(),
-            integrator.momentum(),
-            integrator.configuration().cloned(),
-        );
         integrator.step(h)?;
         run.steps += 1;
-        let (t1, mu1) = (integrator.time(), integrator.momentum());
-        let interpolant = HermiteStep::new(
-            system,
-            (t0, &mu0, g0.as_ref()),
-            (t1, &mu1, integrator.configuration()),
-        )?;
+        let after = DenseState::of(integrator);
+        let interpolant = HermiteStep::between(&before, &after)?;
+        let (t1, mu1) = (after.t, after.mu.clone());
         // events first: a terminal one ends the output at its time
         let mut step_hits = Vec::new();
         for (k, e) in events.iter().enumerate() {
@@ -271,6 +310,7 @@ where
         if run.stopped {
             return Ok(run);
         }
+        before = after;
     }
     Ok(run)
 }

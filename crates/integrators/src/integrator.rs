@@ -106,6 +106,9 @@ pub trait Integrator {
     fn momentum(&self) -> <Self::Group as LieGroup>::Algebra;
     /// The body velocity ξ = ∂h/∂μ ∈ 𝔤 at the current time.
     fn velocity(&self) -> <Self::Group as LieGroup>::Algebra;
+    /// `μ̇ = ad*_ξ μ + F(g) + F_ext(t, g, ξ)` of the system at the current state: the slope the
+    /// dense output interpolates with ([`crate::dense_output`]).
+    fn momentum_rate(&self) -> <Self::Group as LieGroup>::Algebra;
     /// The configuration g, where it is being reconstructed.
     fn configuration(&self) -> Option<&Self::Group>;
     /// The total energy h(μ) + V(g).

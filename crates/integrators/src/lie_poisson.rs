@@ -385,6 +385,14 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
     fn velocity(&self) -> G::Algebra {
         self.system.velocity(&self.mu)
     }
+    fn momentum_rate(&self) -> G::Algebra {
+        crate::dense_output::momentum_rate(
+            &self.system,
+            self.time(),
+            &self.momentum(),
+            self.configuration(),
+        )
+    }
     fn configuration(&self) -> Option<&G> {
         self.g.as_ref()
     }

@@ -110,7 +110,6 @@ fn dense_output_is_within_twice_the_error_at_the_steps() {
         let (mut step_err, mut mid_err) = (0.0f64, 0.0f64);
         integrate_dense(
             &mut integ,
-            &body(),
             h,
             steps,
             &all,
@@ -174,8 +173,7 @@ fn events_are_located_in_their_direction_to_their_tolerance() {
         let event = Event::new(|_, mu: &Vector3<f64>, _| crossing(mu))
             .direction(direction)
             .tolerance(1e-12);
-        let run =
-            integrate_dense(&mut lp, &top(), 0.01, 2000, &[], |_, _, _| {}, &[event]).unwrap();
+        let run = integrate_dense(&mut lp, 0.01, 2000, &[], |_, _, _| {}, &[event]).unwrap();
         let found: Vec<f64> = run.hits.iter().map(|h| h.t).collect();
         assert_eq!(found.len(), expected.len(), "{direction:?}: {found:?}");
         // By symmetry each step turns Π about e₃ by the same angle α, so the discrete solution
@@ -219,7 +217,6 @@ fn a_terminal_event_stops_the_run_at_the_crossing() {
         let mut last_output = 0.0;
         let run = integrate_dense(
             &mut lp,
-            &top(),
             h,
             100_000,
             &times,
@@ -252,16 +249,15 @@ fn a_terminal_event_stops_the_run_at_the_crossing() {
 #[test]
 fn bad_output_times_are_refused() {
     let mut lp = LiePoisson::<So3, Cayley, _>::new(body(), 0.5, PI0, None).unwrap();
-    let err = integrate_dense(&mut lp, &body(), 0.1, 10, &[0.5, 0.2], |_, _, _| {}, &[]);
+    let err = integrate_dense(&mut lp, 0.1, 10, &[0.5, 0.2], |_, _, _| {}, &[]);
     assert!(err.is_err());
-    let err = integrate_dense(&mut lp, &body(), 0.1, 10, &[f64::NAN], |_, _, _| {}, &[]);
+    let err = integrate_dense(&mut lp, 0.1, 10, &[f64::NAN], |_, _, _| {}, &[]);
     assert!(err.is_err());
     assert_eq!(lp.time(), 0.0, "nothing stepped");
     // backwards in time: times decreasing
     let mut seen = Vec::new();
     integrate_dense(
         &mut lp,
-        &body(),
         -0.1,
         10,
         &[-0.05, -0.5, -0.95],
@@ -272,4 +268,83 @@ fn bad_output_times_are_refused() {
     assert_eq!(seen, [-0.05, -0.5, -0.95]);
     assert!(HermiteStep::new(&body(), (0.0, &PI0, None), (0.0, &PI0, None)).is_err());
     assert!(HermiteStep::new(&body(), (0.0, &PI0, Some(&g0())), (0.1, &PI0, None)).is_err());
+}
+
+/// Every integrator reports the equations' μ̇ at its state (the slope of the interpolant): Π × Ω
+/// for the free body, plus the gravity torque −T*_e L_R dV for the heavy top.
+#[test]
+fn every_integrator_reports_the_momentum_rate() {
+    use integrators::baselines::Rkmk4;
+    use integrators::exact::FreeBodyFlow as Flow;
+    use integrators::modified::ModifiedLiePoisson;
+    use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
+    use integrators::systems::HeavyTop;
+    use integrators::{Composition, CompositionScheme, EulerPoincare, System};
+    fn check<I: Integrator<Group = So3>>(
+        name: &str,
+        mut i: I,
+        expected: impl Fn(&I) -> Vector3<f64>,
+    ) {
+        i.step(0.1).unwrap();
+        let (got, want) = (i.momentum_rate(), expected(&i));
+        assert!((got - want).amax() < 1e-14, "{name}: {got} vs {want}");
+    }
+    let rate = |mu: Vector3<f64>| mu.cross(&(body().inertia().try_inverse().unwrap() * mu));
+    let g = Some(g0());
+    check(
+        "lie-poisson",
+        LiePoisson::<So3, Cayley, _>::new(body(), 0.5, PI0, g).unwrap(),
+        |i| rate(i.momentum()),
+    );
+    check(
+        "euler-poincare",
+        EulerPoincare::<So3, Cayley, _>::from_momentum(body(), 0.5, PI0, g).unwrap(),
+        |i| rate(i.momentum()),
+    );
+    check("rk4", QuaternionRk4::new(body(), PI0, g).unwrap(), |i| {
+        rate(i.momentum())
+    });
+    check("rkmk4", Rkmk4::new(body(), PI0, g).unwrap(), |i| {
+        rate(i.momentum())
+    });
+    check("splitting", Splitting::new(body(), PI0, g).unwrap(), |i| {
+        rate(i.momentum())
+    });
+    check("exact", ExactFreeBody::new(body(), PI0, g).unwrap(), |i| {
+        rate(i.momentum())
+    });
+    check(
+        "modified",
+        ModifiedLiePoisson::<Cayley>::new(body(), PI0, g).unwrap(),
+        |i| rate(i.momentum()),
+    );
+    check(
+        "composition",
+        Composition::new(
+            LiePoisson::<So3, Cayley, _>::new(body(), 0.5, PI0, g).unwrap(),
+            CompositionScheme::kahan_li_6(),
+        )
+        .unwrap(),
+        |i| rate(i.momentum()),
+    );
+    let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 9.81, Vector3::new(0.0, 0.1, 0.5)).unwrap();
+    let top_rate =
+        |mu: Vector3<f64>, g: &So3| mu.cross(&top.velocity(&mu)) - top.potential_differential(g);
+    check(
+        "lie-poisson, heavy top",
+        LiePoisson::<So3, Cayley, _>::new(top.clone(), 0.5, PI0, g).unwrap(),
+        |i| top_rate(i.momentum(), i.configuration().unwrap()),
+    );
+    check(
+        "kinetic-kick, heavy top",
+        KineticKick::new(
+            top.clone(),
+            Flow::new(top.body()),
+            SplittingScheme::strang(),
+            PI0,
+            g,
+        )
+        .unwrap(),
+        |i| top_rate(i.momentum(), i.configuration().unwrap()),
+    );
 }

@@ -284,6 +284,9 @@ impl<G: LieGroup> Integrator for Boxed<G> {
     fn velocity(&self) -> G::Algebra {
         self.0.velocity()
     }
+    fn momentum_rate(&self) -> G::Algebra {
+        self.0.momentum_rate()
+    }
     fn configuration(&self) -> Option<&G> {
         self.0.configuration()
     }

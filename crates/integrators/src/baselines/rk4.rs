@@ -192,6 +192,14 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
     fn velocity(&self) -> Vector3<f64> {
         self.system.velocity(&self.pi)
     }
+    fn momentum_rate(&self) -> Vector3<f64> {
+        crate::dense_output::momentum_rate(
+            &self.system,
+            self.time(),
+            &self.momentum(),
+            self.configuration(),
+        )
+    }
     fn configuration(&self) -> Option<&So3> {
         self.attitude
             .as_ref()

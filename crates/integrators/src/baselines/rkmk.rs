@@ -172,6 +172,14 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
     fn velocity(&self) -> G::Algebra {
         self.system.velocity(&self.mu)
     }
+    fn momentum_rate(&self) -> G::Algebra {
+        crate::dense_output::momentum_rate(
+            &self.system,
+            self.time(),
+            &self.momentum(),
+            self.configuration(),
+        )
+    }
     fn configuration(&self) -> Option<&G> {
         self.g.as_ref()
     }

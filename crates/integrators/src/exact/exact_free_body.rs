@@ -93,6 +93,14 @@ impl Integrator for ExactFreeBody {
     fn velocity(&self) -> Vector3<f64> {
         self.body.velocity(&self.pi)
     }
+    fn momentum_rate(&self) -> Vector3<f64> {
+        crate::dense_output::momentum_rate(
+            &self.body,
+            self.time(),
+            &self.momentum(),
+            self.configuration(),
+        )
+    }
     fn configuration(&self) -> Option<&So3> {
         self.r.as_ref()
     }

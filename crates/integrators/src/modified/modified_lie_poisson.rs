@@ -103,6 +103,14 @@ impl<T: ModifiedTau> Integrator for ModifiedLiePoisson<T> {
     fn velocity(&self) -> Vector3<f64> {
         self.body.velocity(&self.kernel.momentum())
     }
+    fn momentum_rate(&self) -> Vector3<f64> {
+        crate::dense_output::momentum_rate(
+            &self.body,
+            self.time(),
+            &self.momentum(),
+            self.configuration(),
+        )
+    }
     fn configuration(&self) -> Option<&So3> {
         self.kernel.configuration()
     }

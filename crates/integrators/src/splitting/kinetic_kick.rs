@@ -131,6 +131,14 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
     fn velocity(&self) -> G::Algebra {
         self.system.velocity(&self.mu)
     }
+    fn momentum_rate(&self) -> G::Algebra {
+        crate::dense_output::momentum_rate(
+            &self.system,
+            self.time(),
+            &self.momentum(),
+            self.configuration(),
+        )
+    }
     fn configuration(&self) -> Option<&G> {
         self.g.as_ref()
     }

@@ -130,6 +130,14 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
     fn velocity(&self) -> G::Algebra {
         self.system.velocity(&self.mu)
     }
+    fn momentum_rate(&self) -> G::Algebra {
+        crate::dense_output::momentum_rate(
+            &self.system,
+            self.time(),
+            &self.momentum(),
+            self.configuration(),
+        )
+    }
     fn configuration(&self) -> Option<&G> {
         self.g.as_ref()
     }
