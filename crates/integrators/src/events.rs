@@ -27,6 +27,25 @@ pub enum Direction {
     Either,
 }
 
+impl Direction {
+    /// Whether e going from `v0` to `v1` over a step is a crossing counted in this direction:
+    /// `Some(rising)` if so. A value of exactly 0 at the step's end counts (so a zero at a step
+    /// point is found once, by the step that ends there); non-finite values never count.
+    pub fn crossing(self, v0: f64, v1: f64) -> Option<bool> {
+        if !v0.is_finite() || !v1.is_finite() {
+            return None;
+        }
+        let rising = v0 < 0.0 && v1 >= 0.0;
+        let falling = v0 > 0.0 && v1 <= 0.0;
+        let counts = match self {
+            Self::Rising => rising,
+            Self::Falling => falling,
+            Self::Either => rising || falling,
+        };
+        counts.then_some(rising)
+    }
+}
+
 /// An event function `e(t, μ, g)`.
 type EventFunction<'a, G> = Box<dyn Fn(f64, &<G as LieGroup>::Algebra, Option<&G>) -> f64 + 'a>;
 
@@ -99,34 +118,45 @@ pub(crate) fn locate<G: LieGroup>(
     v0: f64,
     v1: f64,
 ) -> Option<EventHit<G>> {
-    let rising = v0 < 0.0 && v1 >= 0.0;
-    let falling = v0 > 0.0 && v1 <= 0.0;
-    let counts = match event.direction {
-        Direction::Rising => rising,
-        Direction::Falling => falling,
-        Direction::Either => rising || falling,
-    };
-    if !counts || !v0.is_finite() || !v1.is_finite() {
-        return None;
-    }
+    let rising = event.direction.crossing(v0, v1)?;
     let (ta, tb) = interpolant.span();
     let e = |t: f64| {
         let (mu, g) = interpolant.at(t);
         event.value(t, &mu, g.as_ref())
     };
-    // Illinois: regula falsi, halving the retained end's value when the same end is kept twice.
-    let (mut a, mut fa, mut b, mut fb) = (ta, v0, tb, v1);
+    let t = find_crossing(e, (ta, v0), (tb, v1), event.tolerance);
+    let (mu, g) = interpolant.at(t);
+    Some(EventHit {
+        event: index,
+        t,
+        mu,
+        g,
+        rising,
+    })
+}
+
+/// The zero of `f` in the bracket `(ta, f(ta))`, `(tb, f(tb))` (opposite signs, or `f(tb) = 0`),
+/// located to `tolerance` in t (at least 4 ulps of t) by the Illinois variant of regula falsi,
+/// bisecting when an iterate leaves the bracket; stops early at an exact zero or a non-finite
+/// value. `ta > tb` is allowed (integration backwards in time).
+pub fn find_crossing(
+    f: impl Fn(f64) -> f64,
+    (ta, fa): (f64, f64),
+    (tb, fb): (f64, f64),
+    tolerance: f64,
+) -> f64 {
+    let (mut a, mut fa, mut b, mut fb) = (ta, fa, tb, fb);
+    // which end was kept by the last update: -1 a, 1 b
     let mut kept = 0i8;
     for _ in 0..200 {
-        if (b - a).abs() <= event.tolerance.max(4.0 * f64::EPSILON * b.abs()) || fb == 0.0 {
+        if (b - a).abs() <= tolerance.max(4.0 * f64::EPSILON * b.abs()) || fb == 0.0 {
             break;
         }
         let mut c = b - fb * (b - a) / (fb - fa);
-        // outside the bracket or stuck at an end: bisect
         if !c.is_finite() || (c - a) * (c - b) >= 0.0 {
             c = 0.5 * (a + b);
         }
-        let fc = e(c);
+        let fc = f(c);
         if !fc.is_finite() {
             break;
         }
@@ -135,7 +165,6 @@ pub(crate) fn locate<G: LieGroup>(
             break;
         }
         if (fc < 0.0) == (fb < 0.0) {
-            // the root is in [a, c]: c replaces b
             b = c;
             fb = fc;
             if kept == -1 {
@@ -151,13 +180,9 @@ pub(crate) fn locate<G: LieGroup>(
             kept = 1;
         }
     }
-    let t = if fb == 0.0 { b } else { 0.5 * (a + b) };
-    let (mu, g) = interpolant.at(t);
-    Some(EventHit {
-        event: index,
-        t,
-        mu,
-        g,
-        rising,
-    })
+    if fb == 0.0 {
+        b
+    } else {
+        0.5 * (a + b)
+    }
 }

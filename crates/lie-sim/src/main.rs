@@ -350,6 +350,18 @@ fn cmd_run(
             scene.system.kind()
         ),
     }
+    for e in &summary.events {
+        say!(
+            "  event        {} = {} ({}) at t = {:.12}",
+            e.quantity,
+            e.value,
+            if e.rising { "rising" } else { "falling" },
+            e.t
+        );
+    }
+    if let Some(t) = summary.stopped_at {
+        say!("  stopped      at t = {t:.12} by an event with stop = true");
+    }
     say!(
         "  trajectory   {} ({} rows)",
         summary.out.display(),

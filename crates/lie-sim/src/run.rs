@@ -6,9 +6,10 @@
 
 use crate::error::SimError;
 use crate::output::AtomicFile;
-use crate::scene::Scene;
+use crate::scene::{EventSpec, Scene};
 use crate::sim::{build, Simulation};
 use indicatif::{ProgressBar, ProgressStyle};
+use integrators::events::find_crossing;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -33,7 +34,27 @@ pub struct RunSummary {
     pub out: PathBuf,
     /// What the method is and keeps, as it describes itself.
     pub info: integrators::MethodInfo,
+    /// The crossings of the scene's `[[events]]`, in time order.
+    pub events: Vec<EventRecord>,
+    /// The time at which a `stop = true` event ended the run.
+    pub stopped_at: Option<f64>,
 }
+
+/// One located crossing of a scene event.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventRecord {
+    /// The column that crossed.
+    pub quantity: String,
+    /// The value it crossed.
+    pub value: f64,
+    /// The crossing time, located on the step's interpolant to [`EVENT_TOLERANCE`] × max(1, T).
+    pub t: f64,
+    /// Whether the column was rising.
+    pub rising: bool,
+}
+
+/// Relative width (in units of max(1, T)) to which event times are located.
+pub const EVENT_TOLERANCE: f64 = 1e-12;
 
 /// |x − x₀| / |x₀|, or |x − x₀| when x₀ = 0.
 pub fn relative_error(x: f64, x0: f64) -> f64 {
@@ -79,19 +100,13 @@ impl std::fmt::Display for Cell {
     }
 }
 
-fn write_row(w: &mut impl Write, sim: &dyn Simulation) -> std::io::Result<()> {
-    write!(w, "{}", Cell(sim.time()))?;
-    for x in sim.momentum() {
-        write!(w, ",{}", Cell(x))?;
-    }
-    if let Some(g) = sim.group_matrix() {
-        for x in g {
-            write!(w, ",{}", Cell(x))?;
+/// One CSV row of [`Simulation::row`] cells.
+fn write_cells(w: &mut impl Write, row: &[f64]) -> std::io::Result<()> {
+    for (i, x) in row.iter().enumerate() {
+        if i > 0 {
+            write!(w, ",")?;
         }
-    }
-    write!(w, ",{}", Cell(sim.energy()))?;
-    if let Some(c) = sim.casimir() {
-        write!(w, ",{}", Cell(c))?;
+        write!(w, "{}", Cell(*x))?;
     }
     writeln!(w)
 }
@@ -124,7 +139,10 @@ pub fn run_scene(
 /// Runs an already built simulation for the scene's duration, writing the CSV to `out`.
 ///
 /// Steps of size h, the last one shortened so that the run ends at T exactly; a row at t = 0,
-/// every `stride` steps, and at t = T.
+/// every `stride` steps, and at t = T — or, with `[output] times`, rows at exactly those times,
+/// interpolated between steps ([`Simulation::row_at`]). `[[events]]` crossings are located on
+/// the step's interpolant to [`EVENT_TOLERANCE`] × max(1, T) and returned; a `stop = true`
+/// event ends the run with a last row at its time.
 pub fn run_simulation(
     sim: &mut dyn Simulation,
     scene: &Scene,
@@ -139,10 +157,48 @@ pub fn run_simulation(
     let h_last = scene.duration - (n - 1) as f64 * h;
 
     let werr = |e| file.write_error(e);
-    writeln!(w, "{}", header(sim).join(",")).map_err(werr)?;
-    write_row(&mut w, sim).map_err(werr)?;
-    let mut rows = 1u64;
+    let columns = header(sim);
+    // each event's column in the rows
+    let events: Vec<(usize, &EventSpec)> = scene
+        .events
+        .iter()
+        .enumerate()
+        .map(|(i, e)| {
+            columns
+                .iter()
+                .position(|c| *c == e.quantity)
+                .map(|j| (j, e))
+                .ok_or_else(|| SimError::Invalid {
+                    path: scene.source.clone(),
+                    field: format!("events[{i}].quantity"),
+                    message: format!(
+                        "\"{}\" is not a column of this run (the columns are {})",
+                        e.quantity,
+                        columns[1..].join(", ")
+                    ),
+                })
+        })
+        .collect::<Result<_, _>>()?;
+    let dense = scene.output_times.is_some() || !events.is_empty();
+    let tolerance = EVENT_TOLERANCE * scene.duration.max(1.0);
+    writeln!(w, "{}", columns.join(",")).map_err(werr)?;
+    let mut rows = 0u64;
+    let mut next_time = 0usize;
+    let times: &[f64] = scene.output_times.as_deref().unwrap_or(&[]);
+    let mut row0 = sim.row();
+    if scene.output_times.is_none() {
+        write_cells(&mut w, &row0).map_err(werr)?;
+        rows += 1;
+    } else {
+        while next_time < times.len() && times[next_time] <= row0[0] {
+            write_cells(&mut w, &row0).map_err(werr)?;
+            rows += 1;
+            next_time += 1;
+        }
+    }
     let mut since_row = 0u64;
+    let mut records = Vec::new();
+    let mut stopped_at = None;
 
     let e0 = sim.energy();
     let c0 = sim.casimir();
@@ -160,14 +216,19 @@ pub fn run_simulation(
     });
     let tick = (n / 500).max(1);
 
+    let mut taken = 0;
     for k in 0..n {
         let hk = if k + 1 == n { h_last } else { h };
         let t = sim.time();
+        if dense {
+            sim.mark();
+        }
         sim.step(hk).map_err(|message| SimError::Step {
             step: k,
             time: t,
             message,
         })?;
+        taken += 1;
         let e = sim.energy();
         if !e.is_finite() {
             return Err(SimError::NonFinite { step: k, time: t });
@@ -176,16 +237,68 @@ pub fn run_simulation(
         if let (Some(c0), Some(mc), Some(c)) = (c0, max_c.as_mut(), sim.casimir()) {
             *mc = mc.max(relative_error(c, c0));
         }
-        since_row += 1;
-        if since_row == scene.stride || k + 1 == n {
-            write_row(&mut w, sim).map_err(werr)?;
-            rows += 1;
-            since_row = 0;
+        let row1 = sim.row();
+        // events: sign changes of (column − value) over the step, located on the interpolant
+        let mut step_records = Vec::new();
+        for &(j, ev) in &events {
+            let (v0, v1) = (row0[j] - ev.value, row1[j] - ev.value);
+            if let Some(rising) = ev.direction.crossing(v0, v1) {
+                let f = |tc: f64| sim.row_at(tc).map_or(f64::NAN, |r| r[j] - ev.value);
+                let tc = find_crossing(f, (row0[0], v0), (row1[0], v1), tolerance);
+                step_records.push((
+                    ev.stop,
+                    EventRecord {
+                        quantity: ev.quantity.clone(),
+                        value: ev.value,
+                        t: tc,
+                        rising,
+                    },
+                ));
+            }
+        }
+        step_records.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
+        if let Some(i) = step_records.iter().position(|(stop, _)| *stop) {
+            step_records.truncate(i + 1);
+            stopped_at = Some(step_records[i].1.t);
+        }
+        records.extend(step_records.into_iter().map(|(_, r)| r));
+        let t_end = stopped_at.unwrap_or(row1[0]);
+        let row_at = |tc: f64| -> Result<Vec<f64>, SimError> {
+            if tc == row1[0] {
+                Ok(row1.clone())
+            } else {
+                sim.row_at(tc).map_err(|message| SimError::Step {
+                    step: k,
+                    time: tc,
+                    message,
+                })
+            }
+        };
+        if scene.output_times.is_some() {
+            while next_time < times.len() && times[next_time] <= t_end {
+                write_cells(&mut w, &row_at(times[next_time])?).map_err(werr)?;
+                rows += 1;
+                next_time += 1;
+            }
+        } else {
+            since_row += 1;
+            if stopped_at.is_some() {
+                write_cells(&mut w, &row_at(t_end)?).map_err(werr)?;
+                rows += 1;
+            } else if since_row == scene.stride || k + 1 == n {
+                write_cells(&mut w, &row1).map_err(werr)?;
+                rows += 1;
+                since_row = 0;
+            }
         }
         if let Some(b) = &bar {
             if k % tick == 0 {
                 b.set_position(k);
             }
+        }
+        row0 = row1;
+        if stopped_at.is_some() {
+            break;
         }
     }
     if let Some(b) = bar {
@@ -193,13 +306,15 @@ pub fn run_simulation(
     }
     file.commit_writer(w)?;
     Ok(RunSummary {
-        steps: n,
+        steps: taken,
         rows,
         wall: start.elapsed(),
         max_energy_error: max_e,
         max_casimir_error: max_c,
         out: out.to_path_buf(),
         info: sim.info(),
+        events: records,
+        stopped_at,
     })
 }
 

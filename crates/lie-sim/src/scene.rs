@@ -33,6 +33,15 @@
 //!
 //! [output]
 //! stride = 10                       # write every 10th step (default 1); t = 0 and t = T always
+//! # times = [0.5, 1.0, 2.5]         # or: rows at exactly these times in [0, T] (interpolated
+//!                                   #   between steps by a cubic Hermite on G × 𝔤*; the step
+//!                                   #   is not changed)
+//!
+//! [[events]]                        # optional, repeatable: where a trajectory column crosses a value
+//! quantity = "mu1"                  # mu1…, g11…, energy, casimir
+//! value = 0.0                       # default 0
+//! direction = "falling"             # rising | falling | either (default)
+//! stop = true                       # end the run at the first crossing (default false)
 //!
 //! [sweep]                           # optional: the ensemble run by `lie-sim sweep`
 //! count = 10000                     # N trajectories
@@ -346,6 +355,23 @@ pub struct RawScene {
     pub sweep: Option<RawSweep>,
     /// `[forces]` (optional): external torques and damping (free-rigid-body, heavy-top).
     pub forces: Option<RawForces>,
+    /// `[[events]]` (optional): zero crossings of a trajectory column to locate.
+    #[serde(default)]
+    pub events: Vec<RawEvent>,
+}
+
+/// One `[[events]]` entry: the times where a column of the trajectory crosses a value.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawEvent {
+    /// A column of the trajectory CSV: `mu1`…, `g11`…, `energy`, `casimir`.
+    pub quantity: String,
+    /// The value it crosses (default 0).
+    pub value: Option<f64>,
+    /// `rising`, `falling` or `either` (default).
+    pub direction: Option<String>,
+    /// End the run at the first crossing (default false).
+    pub stop: Option<bool>,
 }
 
 /// `[forces]`: an external body torque (constant or a piecewise-linear schedule) and viscous
@@ -539,6 +565,8 @@ pub struct SweepSpec {
 pub struct RawOutput {
     /// Write every `stride`-th step (default 1).
     pub stride: Option<u64>,
+    /// Write rows at these times only (interpolated between steps), instead of every stride.
+    pub times: Option<Vec<f64>>,
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -733,8 +761,26 @@ pub struct Scene {
     pub duration: f64,
     /// Output stride.
     pub stride: u64,
+    /// Output times (`[output] times`): rows at exactly these times, interpolated between steps
+    /// (`integrators::dense_output`), instead of every `stride` steps.
+    pub output_times: Option<Vec<f64>>,
+    /// Events (`[[events]]`) to locate.
+    pub events: Vec<EventSpec>,
     /// The `[sweep]` table, if the scene has one.
     pub sweep: Option<SweepSpec>,
+}
+
+/// A checked `[[events]]` entry: where the trajectory column `quantity` crosses `value`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventSpec {
+    /// The trajectory column (`mu1`, `g23`, `energy`, …).
+    pub quantity: String,
+    /// The value crossed.
+    pub value: f64,
+    /// Which crossings count.
+    pub direction: integrators::events::Direction,
+    /// Whether the run ends at the first crossing.
+    pub stop: bool,
 }
 
 /// Command-line overrides applied to the raw scene before it is checked.
@@ -886,6 +932,25 @@ impl Scene {
         if let Some(why) = inapplicable(&method, &system) {
             return Err(bad("integrator.method", why));
         }
+        let output_times = match &raw.output.times {
+            None => None,
+            Some(times) => {
+                if raw.output.stride.is_some() {
+                    return Err(bad(
+                        "output.times",
+                        "give either output.times or output.stride, not both".into(),
+                    ));
+                }
+                check_output_times(times, duration).map_err(|m| bad("output.times", m))?;
+                Some(times.clone())
+            }
+        };
+        let events = raw
+            .events
+            .iter()
+            .enumerate()
+            .map(|(i, e)| check_event(e).map_err(|(f, m)| bad(&format!("events[{i}].{f}"), m)))
+            .collect::<Result<Vec<_>, _>>()?;
         let sweep = match &raw.sweep {
             None => None,
             Some(sw) => {
@@ -920,6 +985,8 @@ impl Scene {
             step,
             duration,
             stride,
+            output_times,
+            events,
             sweep,
         })
     }
@@ -1235,6 +1302,61 @@ fn momentum_of_len(kind: SystemKind, mu: &[f64], len: usize) -> Result<(), Field
         ));
     }
     finite_all("initial.momentum", mu)
+}
+
+/// Output times: finite, within [0, T], increasing (strictly), at least one.
+fn check_output_times(times: &[f64], duration: f64) -> Result<(), String> {
+    if times.is_empty() {
+        return Err("needs at least one time".into());
+    }
+    if let Some((i, t)) = times
+        .iter()
+        .enumerate()
+        .find(|(_, t)| !t.is_finite() || **t < 0.0 || **t > duration)
+    {
+        return Err(format!("times[{i}] = {t} is outside [0, T = {duration}]"));
+    }
+    if let Some(i) = (1..times.len()).find(|&i| times[i] <= times[i - 1]) {
+        return Err(format!(
+            "times must increase strictly: times[{i}] = {} after {}",
+            times[i],
+            times[i - 1]
+        ));
+    }
+    Ok(())
+}
+
+/// An `[[events]]` entry; the quantity's column is checked against the run's header when it
+/// starts (it depends on the group and on reconstruction).
+fn check_event(e: &RawEvent) -> Result<EventSpec, FieldError> {
+    use integrators::events::Direction;
+    let value = e.value.unwrap_or(0.0);
+    if !value.is_finite() {
+        return Err(("value".into(), format!("must be finite, got {value}")));
+    }
+    let direction = match e.direction.as_deref() {
+        None | Some("either") => Direction::Either,
+        Some("rising") => Direction::Rising,
+        Some("falling") => Direction::Falling,
+        Some(other) => {
+            return Err((
+                "direction".into(),
+                format!("unknown direction \"{other}\" (rising | falling | either)"),
+            ))
+        }
+    };
+    if e.quantity == "t" {
+        return Err((
+            "quantity".into(),
+            "t is not a quantity of the state; give a column such as mu1, g33 or energy".into(),
+        ));
+    }
+    Ok(EventSpec {
+        quantity: e.quantity.clone(),
+        value,
+        direction,
+        stop: e.stop.unwrap_or(false),
+    })
 }
 
 fn check_forces(f: &RawForces) -> Result<Forces, FieldError> {

@@ -12,6 +12,7 @@ use crate::scene::{
     TauKind,
 };
 use faer::{Col, Mat};
+use integrators::dense_output::{DenseState, HermiteStep};
 use integrators::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
 use integrators::forces::{BodyTorque, Forced, LinearDamping};
 use integrators::modified::ModifiedLiePoisson;
@@ -52,6 +53,26 @@ pub trait Simulation {
     fn casimir(&self) -> Option<f64>;
     /// What the method is and keeps, as it describes itself (`integrators::MethodInfo`).
     fn info(&self) -> integrators::MethodInfo;
+
+    /// The current state as a trajectory row: t, μ, g's entries (when reconstructed), energy,
+    /// Casimir (when the system has one) — the columns of `run::header`.
+    fn row(&self) -> Vec<f64> {
+        let mut r = vec![self.time()];
+        r.extend(self.momentum());
+        r.extend(self.group_matrix().unwrap_or_default());
+        r.push(self.energy());
+        r.extend(self.casimir());
+        r
+    }
+    /// Remembers the current state as the start of the step about to be taken, for
+    /// [`Self::row_at`].
+    fn mark(&mut self) {}
+    /// The row at time t between the marked state and the current one, by the cubic Hermite
+    /// interpolant of `integrators::dense_output` (energy and Casimir evaluated at the
+    /// interpolated state).
+    fn row_at(&self, _t: f64) -> Result<Vec<f64>, String> {
+        Err("this simulation has no dense output".into())
+    }
 }
 
 /// Builds the simulation a scene names: its system with its initial state, advanced by `method`.
@@ -113,7 +134,8 @@ impl Job for SingleRun {
         S: integrators::System<G> + Clone + Sync + 'static,
         F: Fn(S, G::Algebra, Option<G>) -> Result<Boxed<G>, IntegratorError> + Sync,
     {
-        Ok(Box::new(Adapter(make(system, mu0, g0)?)))
+        let integrator = make(system.clone(), mu0, g0)?;
+        Ok(Box::new(Adapter::new(integrator, system)))
     }
 }
 
@@ -687,23 +709,70 @@ impl<G: LieGroup, S: SplitSystem<G>> SplitSystem<G> for WithCasimir<G, S> {
 }
 
 /// Any integrator of the integrators crate, seen as a [`Simulation`].
-struct Adapter<I>(I);
+struct Adapter<I: Integrator> {
+    integrator: I,
+    /// (E, C) at a state (μ, g), from the system (for interpolated rows).
+    invariants: InvariantsOf<I::Group>,
+    /// The state at the start of the current step ([`Simulation::mark`]).
+    marked: Option<DenseState<I::Group>>,
+}
+
+/// `(μ, g) ↦ (E(μ, g), C(μ))` of a system.
+type InvariantsOf<G> = Box<dyn Fn(&<G as LieGroup>::Algebra, Option<&G>) -> (f64, Option<f64>)>;
+
+impl<I: Integrator> Adapter<I> {
+    fn new<S: integrators::System<I::Group> + 'static>(integrator: I, system: S) -> Self {
+        Self {
+            integrator,
+            invariants: Box::new(move |mu, g| (system.energy(mu, g), system.casimir(mu))),
+            marked: None,
+        }
+    }
+}
 
 impl<I: Integrator> Simulation for Adapter<I> {
     fn step(&mut self, h: f64) -> Result<(), String> {
-        self.0.step(h).map_err(|e| e.to_string())
+        self.integrator.step(h).map_err(|e| e.to_string())
+    }
+    fn mark(&mut self) {
+        self.marked = Some(DenseState::of(&self.integrator));
+    }
+    fn row_at(&self, t: f64) -> Result<Vec<f64>, String> {
+        let start = self
+            .marked
+            .as_ref()
+            .ok_or("no step marked for dense output")?;
+        let step = HermiteStep::between(start, &DenseState::of(&self.integrator))
+            .map_err(|e| e.to_string())?;
+        let (mu, g) = step.at(t);
+        let (energy, casimir) = (self.invariants)(&mu, g.as_ref());
+        let mut r = vec![t];
+        r.extend(mu.to_vec());
+        if let Some(g) = &g {
+            let m = g.matrix().to_mat();
+            r.extend(
+                (0..m.nrows())
+                    .flat_map(|i| (0..m.ncols()).map(move |j| (i, j)))
+                    .map(|(i, j)| m[(i, j)]),
+            );
+        }
+        r.push(energy);
+        r.extend(casimir);
+        Ok(r)
     }
     fn time(&self) -> f64 {
-        self.0.time()
+        self.integrator.time()
     }
     fn momentum(&self) -> Vec<f64> {
-        self.0.momentum().to_vec()
+        self.integrator.momentum().to_vec()
     }
     fn group_side(&self) -> Option<usize> {
-        self.0.configuration().map(|g| g.matrix().to_mat().nrows())
+        self.integrator
+            .configuration()
+            .map(|g| g.matrix().to_mat().nrows())
     }
     fn group_matrix(&self) -> Option<Vec<f64>> {
-        self.0.configuration().map(|g| {
+        self.integrator.configuration().map(|g| {
             let m = g.matrix().to_mat();
             (0..m.nrows())
                 .flat_map(|i| (0..m.ncols()).map(move |j| (i, j)))
@@ -712,13 +781,13 @@ impl<I: Integrator> Simulation for Adapter<I> {
         })
     }
     fn energy(&self) -> f64 {
-        self.0.energy()
+        self.integrator.energy()
     }
     fn casimir(&self) -> Option<f64> {
-        self.0.casimir()
+        self.integrator.casimir()
     }
     fn info(&self) -> integrators::MethodInfo {
-        self.0.info()
+        self.integrator.info()
     }
 }
 
