@@ -41,6 +41,11 @@
 //!   (19) evaluates — base and second points, the momentum update and base momentum of
 //!   `(R̃_d^{T*})⁻¹`, the velocities of `R̃_d^T` — fused, allocation-free, in increment form, with
 //!   the derivatives Newton needs. The `integrators` crate is written against this trait alone.
+//! - The right-trivialized map ([`RightDiscretizationMap`], "defined analogously" in §3):
+//!   `R̃_d^R(g, ξ) = (τ(−θξ) g, τ((1−θ)ξ) g)` with `u_g = ξ g`; inversion carries it onto the left
+//!   map at (g⁻¹, −ξ), so its lifts are the left ones at −η with the points multiplied on the left
+//!   ([`Side::Right`]); its integrators take right-invariant systems, `μ̇ = −ad*_ξ μ`, `ġ = ξ g`,
+//!   and keep `Ad*_g μ`.
 //! - The same maps on ℝⁿ ([`VectorSpaceDiscretization`]), where they are the θ-method, the implicit
 //!   midpoint rule and symplectic Euler.
 //!
@@ -82,12 +87,14 @@ mod discretization_map;
 mod error;
 mod lifted_map;
 mod retraction;
+mod right_discretization_map;
 mod tangent_lift;
 mod vector_space;
 
 pub use cotangent_lift::phi;
 pub use discretization_map::{DiscretizationMap, InverseMethod, NewtonOptions};
 pub use error::DiscretizationError;
-pub use lifted_map::{LiftedMap, MomentumUpdate};
+pub use lifted_map::{LiftedMap, MomentumUpdate, Side};
 pub use retraction::Retraction;
+pub use right_discretization_map::RightDiscretizationMap;
 pub use vector_space::{Point, TangentPoint, VectorSpaceDiscretization};

@@ -34,6 +34,28 @@ pub struct MomentumUpdate<A> {
     pub increment: A,
 }
 
+/// Which translation trivializes TG and T*G for a map and its integrators.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Side {
+    /// Left (body frame, the paper's default): `ġ = g ξ`, and a left-invariant system moves by
+    /// `μ̇ = ad*_ξ μ + F`.
+    #[default]
+    Left,
+    /// Right (spatial frame, "defined analogously" in §3): `ġ = ξ g`, and a right-invariant
+    /// system moves by `μ̇ = −ad*_ξ μ`.
+    Right,
+}
+
+impl Side {
+    /// The sign of `ad*_ξ μ` in the reduced equations: +1 left, −1 right.
+    pub fn ad_dual_sign(self) -> f64 {
+        match self {
+            Self::Left => 1.0,
+            Self::Right => -1.0,
+        }
+    }
+}
+
 /// A discretization map `R̃_d: G ⋉ 𝔤 → G × G` (§3.2) with the components of its lifts (eqs. 16–17)
 /// that a step of eq. (18) or (19) evaluates.
 ///
@@ -53,6 +75,11 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
     fn theta(&self) -> f64;
     /// How the map names itself in a method name, e.g. `tau=cayley`.
     fn label(&self) -> String;
+    /// Which translation the map and its lifts are trivialized by ([`Side::Left`] unless
+    /// overridden): integrators take the sign of ad* in their vector fields from it.
+    fn side(&self) -> Side {
+        Side::Left
+    }
 
     /// The base point ḡ of `R̃_d(ḡ, η)` whose first point is g_k.
     fn base_point(&self, gk: &G, eta: &G::Algebra) -> G;

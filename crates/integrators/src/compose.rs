@@ -510,6 +510,9 @@ impl<I: StateSnapshot> Integrator for Composition<I> {
     }
     /// The scheme's order (the base is symmetric of order 2, by [`Composition::new`]), symmetric,
     /// and whatever the base keeps: every flag of [`crate::MethodInfo`] is closed under composition.
+    fn side(&self) -> discretization::Side {
+        self.inner.side()
+    }
     fn info(&self) -> crate::MethodInfo {
         crate::MethodInfo {
             order: self.scheme.order(),

@@ -40,6 +40,7 @@
 use crate::events::{locate, Event, EventHit};
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
+use discretization::Side;
 use lie_groups::{LieGroup, Operator, Vector};
 
 /// The cubic Hermite interpolant of one step (see the module page).
@@ -52,8 +53,9 @@ pub struct HermiteStep<G: LieGroup> {
     /// h μ̇ at both ends.
     dmu0: G::Algebra,
     dmu1: G::Algebra,
-    /// g₀ and Z where g is reconstructed.
+    /// g₀ (k₀ = g₀⁻¹ for the right trivialization) and Z where g is reconstructed.
     g: Option<(G, ConfigurationCurve<G>)>,
+    side: Side,
 }
 
 /// Z(1), Z'(0), Z'(1) of the configuration curve `g₀ exp Z(s)`.
@@ -66,8 +68,20 @@ pub fn momentum_rate<G: LieGroup, S: System<G>>(
     mu: &G::Algebra,
     g: Option<&G>,
 ) -> G::Algebra {
+    momentum_rate_on(Side::Left, system, t, mu, g)
+}
+
+/// [`momentum_rate`] in the trivialization `side`: `μ̇ = ±ad*_ξ μ + F + F_ext` (− for the right
+/// trivialization of a right-invariant system).
+pub fn momentum_rate_on<G: LieGroup, S: System<G>>(
+    side: Side,
+    system: &S,
+    t: f64,
+    mu: &G::Algebra,
+    g: Option<&G>,
+) -> G::Algebra {
     let xi = system.velocity(mu);
-    let mut rate = G::ad_dual_apply(&xi, mu);
+    let mut rate = G::ad_dual_apply(&xi, mu).scale(side.ad_dual_sign());
     if let Some(f) = force(system, g) {
         rate = rate.add(&f);
     }
@@ -90,6 +104,8 @@ pub struct DenseState<G: LieGroup> {
     pub xi: G::Algebra,
     /// μ̇ of the equations of motion.
     pub rate: G::Algebra,
+    /// The trivialization of ξ and μ ([`Integrator::side`]).
+    pub side: Side,
 }
 
 impl<G: LieGroup> DenseState<G> {
@@ -101,6 +117,7 @@ impl<G: LieGroup> DenseState<G> {
             g: integrator.configuration().cloned(),
             xi: integrator.velocity(),
             rate: integrator.momentum_rate(),
+            side: integrator.side(),
         }
     }
     /// The state (t, μ, g) of `system`.
@@ -111,6 +128,7 @@ impl<G: LieGroup> DenseState<G> {
             g: g.cloned(),
             xi: system.velocity(mu),
             rate: momentum_rate(system, t, mu, g),
+            side: Side::Left,
         }
     }
 }
@@ -146,7 +164,22 @@ impl<G: LieGroup> HermiteStep<G> {
                 what: "momentum rate for dense output",
             });
         }
-        let g = match (&a.g, &b.g) {
+        if a.side != b.side {
+            return Err(IntegratorError::InvalidParameter {
+                reason: "dense output between states of different trivializations".into(),
+            });
+        }
+        // Right-trivialized states go through the inversion k = g⁻¹ (left velocity −ξ):
+        // g(s) = (k₀ exp Z(s))⁻¹ = exp(−Z(s)) g₀.
+        let (sign, g0, g1) = match a.side {
+            Side::Left => (1.0, a.g.clone(), b.g.clone()),
+            Side::Right => (
+                -1.0,
+                a.g.as_ref().map(G::inverse),
+                b.g.as_ref().map(G::inverse),
+            ),
+        };
+        let g = match (&g0, &g1) {
             (Some(g0), Some(g1)) => {
                 let z1 =
                     g0.inverse()
@@ -156,8 +189,8 @@ impl<G: LieGroup> HermiteStep<G> {
                             step: h,
                             reason: format!("no dense output across this step: {e}"),
                         })?;
-                let dz0 = a.xi.scale(h);
-                let dz1 = G::dexp_left_inv(&z1).apply(&b.xi.scale(h));
+                let dz0 = a.xi.scale(sign * h);
+                let dz1 = G::dexp_left_inv(&z1).apply(&b.xi.scale(sign * h));
                 if !dz1.is_finite() {
                     return Err(IntegratorError::NonFinite {
                         what: "configuration slope for dense output",
@@ -173,6 +206,7 @@ impl<G: LieGroup> HermiteStep<G> {
             }
         };
         Ok(Self {
+            side: a.side,
             t0,
             h,
             mu0: a.mu.clone(),
@@ -204,7 +238,10 @@ impl<G: LieGroup> HermiteStep<G> {
             .add(&self.dmu1.scale(h11));
         let g = self.g.as_ref().map(|(g0, [z1, dz0, dz1])| {
             let z = dz0.scale(h10).add(&z1.scale(h01)).add(&dz1.scale(h11));
-            G::exp_compose(g0, &z)
+            match self.side {
+                Side::Left => G::exp_compose(g0, &z),
+                Side::Right => G::exp_compose(g0, &z).inverse(),
+            }
         });
         (mu, g)
     }

@@ -87,6 +87,15 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
         check_theta(theta)?;
         check_state(&system, &xi0, "velocity ξ", g0.as_ref())?;
         let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
+        if map.side() == discretization::Side::Right
+            && (system.has_potential() || system.is_forced())
+        {
+            return Err(IntegratorError::InvalidParameter {
+                reason: "the right-trivialized integrators take right-invariant systems: no \
+                         potential V(g) and no external force"
+                    .into(),
+            });
+        }
         Ok(Self {
             system,
             map,
@@ -156,7 +165,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     /// vector field (F_ext only for a forced system, see [`crate::forces`]).
     fn field(&self, t: f64, g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
         let mu = self.system.momentum(xi);
-        let mut rhs = G::ad_dual_apply(xi, &mu);
+        let mut rhs = G::ad_dual_apply(xi, &mu).scale(self.map.side().ad_dual_sign());
         if let Some(f) = force(&self.system, g) {
             rhs = rhs.add(&f);
         }
@@ -196,6 +205,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
         if let Some(hinv) = hess.try_inverse() {
             df = df.add(&hess.compose(&G::ad(xi).transpose()).compose(&hinv));
         }
+        let df = df.scale(self.map.side().ad_dual_sign());
         a.add(&b.compose(&df).scale(h))
     }
 }
@@ -286,7 +296,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         self.xi.clone()
     }
     fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(
+        crate::dense_output::momentum_rate_on(
+            self.map.side(),
             &self.system,
             self.time(),
             &self.momentum(),
@@ -312,6 +323,9 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
     /// Order 2 for θ = ½, order 1 otherwise (`tests/order.rs`); θ = 0 is explicit. A variational
     /// integrator: symplectic in (g, ξ) through the discrete Legendre map, but μ = ∂l/∂ξ leaves its
     /// coadjoint orbit (Casimirs are not kept).
+    fn side(&self) -> discretization::Side {
+        self.map.side()
+    }
     fn info(&self) -> crate::MethodInfo {
         let symmetric = self.theta() == 0.5;
         crate::MethodInfo {

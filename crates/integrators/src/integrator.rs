@@ -119,6 +119,11 @@ pub trait Integrator {
     fn method_name(&self) -> String;
     /// What the method is (order, symmetric, explicit) and what it keeps.
     fn info(&self) -> MethodInfo;
+    /// Which translation trivializes its velocities and momenta: left (body frame, `ġ = g ξ`;
+    /// the default) or right (spatial frame, `ġ = ξ g`, for right-invariant systems).
+    fn side(&self) -> discretization::Side {
+        discretization::Side::Left
+    }
 }
 
 /// Takes `steps` steps of size h, calling `observe` after each one; stops at the first error.

@@ -14,7 +14,9 @@
 //!   [`TangentLiftIntegrator`] are written against `discretization::LiftedMap` alone (the fused
 //!   components of T*R̃_d⁻¹, R̃_d^{T*} and T R̃_d with their Newton derivatives) and add only the
 //!   vector field, the solver and the state; `LiePoisson<G, T, S>` and `EulerPoincare<G, T, S>` are
-//!   these for the left-trivialized `DiscretizationMap<T>`. A new map implementing `LiftedMap` gets
+//!   these for the left-trivialized `DiscretizationMap<T>`; with `RightDiscretizationMap<T>` they
+//!   integrate right-invariant systems in the spatial frame (`tests/right_trivialized.rs`). A new
+//!   map implementing `LiftedMap` gets
 //!   its integrators with no integrator code (`tests/assembled_step.rs` checks the assembled steps
 //!   against the hand-derived schemes on SO(3), SE(3), SE(2) and SO(4)).
 //! - [`EulerArnold`]: the quadratic-Lagrangian system l(ξ) = ½⟨𝕀ξ, ξ⟩ both integrate.

@@ -152,6 +152,15 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         check_theta(theta)?;
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
+        if map.side() == discretization::Side::Right
+            && (system.has_potential() || system.is_forced())
+        {
+            return Err(IntegratorError::InvalidParameter {
+                reason: "the right-trivialized integrators take right-invariant systems: no \
+                         potential V(g) and no external force"
+                    .into(),
+            });
+        }
         Ok(Self {
             system,
             map,
@@ -272,7 +281,10 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// (the plain `h ∂h/∂μ(μ_k)` is only O(h²)), which saves the solver an iteration.
     fn predictor(&self, h: f64) -> G::Algebra {
         let v = self.system.velocity(&self.mu);
-        let mut mid = self.mu.axpy(0.5 * h, &G::ad_dual_apply(&v, &self.mu));
+        let sign = self.map.side().ad_dual_sign();
+        let mut mid = self
+            .mu
+            .axpy(0.5 * h * sign, &G::ad_dual_apply(&v, &self.mu));
         if let Some(f) = force(&self.system, self.g.as_ref()) {
             mid = mid.axpy((1.0 - self.theta()) * h, &f);
         }
@@ -386,7 +398,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         self.system.velocity(&self.mu)
     }
     fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(
+        crate::dense_output::momentum_rate_on(
+            self.map.side(),
             &self.system,
             self.time(),
             &self.momentum(),
@@ -410,6 +423,9 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
     /// `tests/forces.rs`). Implicit, a
     /// Poisson map keeping μ on its coadjoint orbit and, for an invariant system, the spatial
     /// momentum map `Ad*_{g⁻¹} μ` (g_{k+1} = g_k τ(θξ) τ((1−θ)ξ) and μ_{k+1} the matching Ad*).
+    fn side(&self) -> discretization::Side {
+        self.map.side()
+    }
     fn info(&self) -> crate::MethodInfo {
         let symmetric = self.theta() == 0.5;
         crate::MethodInfo {
