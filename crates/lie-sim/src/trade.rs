@@ -4,23 +4,27 @@
 //! compositions [`COMPOSITIONS`] of the θ = ½ Lie–Poisson method for each τ, the Strang splitting
 //! and its compositions [`SPLITTING_COMPOSITIONS`], the kinetic–kick splittings (Strang,
 //! Blanes–Moan 4 and 6), the exact free-body flow, rk4 and rkmk4) runs the scene over a ladder of
-//! steps h₀, h₀/2, …, h₀/2^{L−1} (h₀ the scene's step; the exact flow also in one step to T); a
-//! composite step of size h is s base steps. Methods that do not apply to the system (euler-arnold
-//! with a potential, rk4 off SO(3), the exact flow off the free body, …) are left out. Each run is
-//! compared at the final time T with a reference solution: the exact flow on the free rigid body,
-//! elsewhere the order-8 composition at a step smaller than the finest of the ladder (see
-//! [`reference()`]). The table reports, per run, the cost (ns per step, total time),
-//! the error at T and the maximum relative energy error.
+//! steps ([`crate::ladder`]: from the scene's time scale, h ω = 1 halved down to the reference
+//! floor, or the `--steps` list; the exact flow also in one step to T); a composite step of size h
+//! is s base steps. Methods that do not apply to the system (euler-arnold with a potential, rk4
+//! off SO(3), the exact flow off the free body, …) are left out. Each run is compared at the final
+//! time T with a reference solution: the exact flow on the free rigid body, elsewhere the order-8
+//! composition at a step smaller than the finest of the ladder (see [`reference()`]). The table
+//! reports, per run, the cost (ns per step, total time), the error at T and the long-horizon
+//! measures of [`crate::invariants`]: the maximum relative energy, Casimir and spatial
+//! momentum-map errors over the run (`-` where they do not apply); `--metric` picks the one the
+//! plot draws against cost.
 //!
 //! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
-//! only where both runs reconstruct g. Timing covers only the steps: the energy is sampled every
-//! [`ENERGY_SAMPLE`] steps outside the timed intervals, so that the table measures the integrator,
-//! not the bookkeeping.
+//! only where both runs reconstruct g. Timing covers only the steps: the invariants are sampled
+//! every [`ENERGY_SAMPLE`] steps (and at T) outside the timed intervals, so that the table
+//! measures the integrator, not the bookkeeping, and nothing of the trajectory is stored.
 
 use crate::error::SimError;
+use crate::invariants::Monitor;
 use crate::output::write_atomic;
 use crate::plot::{plot_loglog, Curve};
-use crate::run::{relative_error, Cell};
+use crate::run::Cell;
 use crate::scene::{steps_for, Method, MethodSpec, Scene, System, TauKind};
 use crate::sim::{build, Simulation};
 use integrators::splitting::SplittingScheme;
@@ -183,14 +187,25 @@ pub struct Timed {
     pub stepping: Duration,
     /// Maximum relative energy error over the samples.
     pub max_energy_error: f64,
+    /// Maximum relative Casimir error over the samples, where the system has a Casimir.
+    pub max_casimir_error: Option<f64>,
+    /// Maximum relative error of the conserved part of the spatial momentum map over the samples,
+    /// where g is reconstructed and the system keeps one ([`crate::invariants`]).
+    pub max_momentum_map_error: Option<f64>,
 }
 
-/// Runs `sim` to `duration` with step `h` (the last step shortened to land on T).
-pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Timed, SimError> {
+/// Runs `sim` (a simulation of `system`) to `duration` with step `h` (the last step shortened to
+/// land on T), sampling the invariants of [`crate::invariants`] every [`ENERGY_SAMPLE`] steps
+/// and at T, outside the timed intervals.
+pub fn timed_run(
+    sim: &mut dyn Simulation,
+    system: &System,
+    duration: f64,
+    h: f64,
+) -> Result<Timed, SimError> {
     let n = steps_for(duration, h);
     let h_last = duration - (n - 1) as f64 * h;
-    let e0 = sim.energy();
-    let mut max_e = 0.0f64;
+    let mut monitor = Monitor::new(sim, system);
     let mut stepping = Duration::ZERO;
     let mut k = 0u64;
     while k < n {
@@ -208,20 +223,21 @@ pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Time
             k += 1;
         }
         stepping += start.elapsed();
-        let e = sim.energy();
+        let e = monitor.sample(sim);
         if !e.is_finite() {
             return Err(SimError::NonFinite {
                 step: k - 1,
                 time: sim.time(),
             });
         }
-        max_e = max_e.max(relative_error(e, e0));
     }
     Ok(Timed {
         state: FinalState::of(sim),
         steps: n,
         stepping,
-        max_energy_error: max_e,
+        max_energy_error: monitor.energy,
+        max_casimir_error: monitor.casimir,
+        max_momentum_map_error: monitor.momentum_map,
     })
 }
 
@@ -247,7 +263,7 @@ pub struct Reference {
 pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
     let run = |m: &MethodSpec, h: f64| -> Result<FinalState, SimError> {
         let mut sim = build(&scene.system, m, scene.reconstruct, &scene.solver)?;
-        Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
+        Ok(timed_run(sim.as_mut(), &scene.system, scene.duration, h)?.state)
     };
     if matches!(scene.system, System::FreeRigidBody(_)) && scene.system.forces().is_none() {
         let m = MethodSpec::plain(Method::Exact, None);
@@ -280,22 +296,23 @@ pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
 /// The work of [`trade`] before it starts: every candidate over the ladder (a composite step
 /// counts its stages), `repeats` times, and the two reference runs (the order-8 reference's 17
 /// stages at h_min/2 and h_min; the exact flow's one step and its run at h_min). Bytes: the table.
-pub fn estimate(scene: &Scene, levels: usize, repeats: usize) -> crate::bounds::Estimate {
+pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds::Estimate {
     let per_unit_h: u128 = candidates()
         .iter()
         .map(|m| m.composition.as_ref().map_or(1, |c| c.stages()) as u128)
         .sum();
-    let base = u128::from(steps_for(scene.duration, scene.step));
-    // Σ_k T/(h₀/2ᵏ) over the ladder = (2^L − 1)·T/h₀.
-    let ladder = base.saturating_mul((1u128 << levels.min(100)) - 1);
-    let h_min = scene.step / f64::powi(2.0, levels as i32 - 1);
-    let reference = u128::from(steps_for(scene.duration, h_min)).saturating_mul(3 * 17);
+    let steps = |h: f64| u128::from(steps_for(scene.duration, h));
+    let ladder_steps: u128 = ladder.iter().map(|&h| steps(h)).sum();
+    let h_min = ladder.iter().copied().fold(f64::INFINITY, f64::min);
+    let reference = steps(h_min / REFERENCE_REFINEMENT_ORDER8)
+        .saturating_add(steps(h_min))
+        .saturating_mul(17);
     crate::bounds::Estimate {
-        steps: ladder
+        steps: ladder_steps
             .saturating_mul(per_unit_h)
             .saturating_mul(repeats as u128)
             .saturating_add(reference),
-        bytes: crate::bounds::Estimate::csv((candidates().len() * (levels + 1)) as u128, 11),
+        bytes: crate::bounds::Estimate::csv((candidates().len() * (ladder.len() + 1)) as u128, 13),
     }
 }
 
@@ -316,6 +333,11 @@ pub struct TradeRow {
     pub error: f64,
     /// Maximum relative energy error (NaN when the run failed).
     pub max_energy_error: f64,
+    /// Maximum relative Casimir error, where the system has a Casimir (NaN when the run failed).
+    pub max_casimir_error: Option<f64>,
+    /// Maximum relative error of the conserved part of the spatial momentum map, where it applies
+    /// (NaN when the run failed).
+    pub max_momentum_map_error: Option<f64>,
     /// Why the run failed, if it did.
     pub failure: Option<String>,
 }
@@ -333,26 +355,23 @@ pub struct TradeReport {
     pub inapplicable: Vec<MethodSpec>,
 }
 
-/// Runs the trade over `levels` step sizes; each run is repeated `repeats` times from the same
+/// Runs the trade over the steps of `ladder`; each run is repeated `repeats` times from the same
 /// initial state and the fastest stepping time kept (the minimum is the least disturbed by other
 /// load on the machine; the numbers themselves are identical between repeats). `on_row` sees each
 /// row as soon as it is measured.
 pub fn trade(
     scene: &Scene,
-    levels: usize,
+    ladder: &[f64],
     repeats: usize,
     mut on_row: impl FnMut(&TradeRow),
 ) -> Result<TradeReport, SimError> {
-    let ladder: Vec<f64> = (0..levels)
-        .map(|k| scene.step / f64::powi(2.0, k as i32))
-        .collect();
-    let h_min = ladder.last().copied().unwrap_or(scene.step);
+    let h_min = ladder.iter().copied().fold(scene.duration, f64::min);
     let reference = reference(scene, h_min)?;
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     let mut inapplicable = Vec::new();
     for m in candidates() {
-        for h in steps_of(&m, &ladder, scene.duration) {
+        for h in steps_of(&m, ladder, scene.duration) {
             let mut best: Option<Result<Timed, SimError>> = None;
             for _ in 0..repeats.max(1) {
                 let mut sim = match build(&scene.system, &m, scene.reconstruct, &scene.solver) {
@@ -364,7 +383,7 @@ pub fn trade(
                     }
                     Err(e) => return Err(e),
                 };
-                let t = timed_run(sim.as_mut(), scene.duration, h);
+                let t = timed_run(sim.as_mut(), &scene.system, scene.duration, h);
                 best = Some(match (best, t) {
                     (Some(Ok(b)), Ok(t)) if b.stepping <= t.stepping => Ok(b),
                     (_, t) => t,
@@ -388,6 +407,8 @@ pub fn trade(
                     seconds: t.stepping.as_secs_f64(),
                     error: t.state.error(&reference.state),
                     max_energy_error: t.max_energy_error,
+                    max_casimir_error: t.max_casimir_error,
+                    max_momentum_map_error: t.max_momentum_map_error,
                     failure: None,
                 },
                 Err(e) => TradeRow {
@@ -398,6 +419,8 @@ pub fn trade(
                     seconds: f64::NAN,
                     error: f64::NAN,
                     max_energy_error: f64::NAN,
+                    max_casimir_error: Some(f64::NAN),
+                    max_momentum_map_error: Some(f64::NAN),
                     failure: Some(e.to_string()),
                 },
             };
@@ -440,8 +463,18 @@ pub fn fitted_order(rows: &[&TradeRow], reference_error: f64) -> Option<f64> {
 /// Table header, fixed width.
 pub fn table_header() -> String {
     format!(
-        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11}",
-        "method", "tau", "theta", "composition", "h", "steps", "ns/step", "error(T)", "max|dE/E|"
+        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11} {:>11}",
+        "method",
+        "tau",
+        "theta",
+        "composition",
+        "h",
+        "steps",
+        "ns/step",
+        "error(T)",
+        "max|dE/E|",
+        "max|dC/C|",
+        "max|dJ|/|J|"
     )
 }
 
@@ -458,21 +491,33 @@ pub fn table_line(r: &TradeRow) -> String {
     match &r.failure {
         Some(f) => format!("{head} failed: {f}"),
         None => format!(
-            "{head} {:>10} {:>11.1} {:>11.3e} {:>11.3e}",
-            r.steps, r.ns_per_step, r.error, r.max_energy_error
+            "{head} {:>10} {:>11.1} {:>11.3e} {:>11.3e} {:>11} {:>11}",
+            r.steps,
+            r.ns_per_step,
+            r.error,
+            r.max_energy_error,
+            optional(r.max_casimir_error),
+            optional(r.max_momentum_map_error)
         ),
     }
 }
 
-/// The rows as CSV.
+/// A table cell for a measure that may not apply: `-` where it does not.
+fn optional(x: Option<f64>) -> String {
+    x.map_or_else(|| "-".into(), |v| format!("{v:.3e}"))
+}
+
+/// The rows as CSV; a measure that does not apply is an empty cell.
 pub fn to_csv(rows: &[TradeRow]) -> String {
     let mut s = String::from(
-        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,failure\n",
+        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,\
+         max_casimir_error,max_momentum_map_error,failure\n",
     );
+    let cell = |x: Option<f64>| x.map_or_else(String::new, |v| Cell(v).to_string());
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.method.method_label(),
             r.method.tau_label(),
             r.method.theta_label(),
@@ -483,10 +528,120 @@ pub fn to_csv(rows: &[TradeRow]) -> String {
             Cell(r.seconds),
             Cell(r.error),
             Cell(r.max_energy_error),
+            cell(r.max_casimir_error),
+            cell(r.max_momentum_map_error),
             r.failure.as_deref().unwrap_or("").replace(',', ";")
         );
     }
     s
+}
+
+/// What the plot draws against cost (every one is in the table and the CSV).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Metric {
+    /// The error at T against the reference.
+    Error,
+    /// The maximum relative energy error over the run.
+    Energy,
+    /// The maximum relative Casimir error over the run.
+    Casimir,
+    /// The maximum relative error of the conserved part of the spatial momentum map over the run.
+    MomentumMap,
+}
+
+impl Metric {
+    /// The value of the metric for a row (`None` where it does not apply).
+    pub fn of(self, r: &TradeRow) -> Option<f64> {
+        match self {
+            Self::Error => Some(r.error),
+            Self::Energy => Some(r.max_energy_error),
+            Self::Casimir => r.max_casimir_error,
+            Self::MomentumMap => r.max_momentum_map_error,
+        }
+    }
+
+    /// The axis label.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::Error => "error at T",
+            Self::Energy => "max relative energy error |E − E₀|/|E₀|",
+            Self::Casimir => "max relative Casimir error |C − C₀|/|C₀|",
+            Self::MomentumMap => "max relative momentum-map error |J − J₀|/|J₀|",
+        }
+    }
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Error => "error",
+            Self::Energy => "energy",
+            Self::Casimir => "casimir",
+            Self::MomentumMap => "momentum-map",
+        }
+    }
+}
+
+/// Refuses a metric the scene does not have: a Casimir where its system monitors none, the
+/// momentum map without reconstruction or where the system keeps no part of it
+/// ([`crate::invariants::conserved_momentum_map`]).
+pub fn check_metric(scene: &Scene, metric: Metric) -> Result<(), SimError> {
+    let why = match metric {
+        Metric::Error | Metric::Energy => None,
+        Metric::Casimir => {
+            let sim = build(
+                &scene.system,
+                &scene.method,
+                scene.reconstruct,
+                &scene.solver,
+            )?;
+            sim.casimir()
+                .is_none()
+                .then(|| format!("{} monitors no Casimir", scene.system.kind()))
+        }
+        Metric::MomentumMap => {
+            if crate::invariants::conserved_momentum_map(&scene.system).is_none() {
+                Some(format!(
+                    "this {} keeps no part of the spatial momentum map (a potential or forces \
+                     break its symmetry)",
+                    scene.system.kind()
+                ))
+            } else if !scene.reconstruct {
+                Some("the scene does not reconstruct g (reconstruct = false)".into())
+            } else {
+                None
+            }
+        }
+    };
+    match why {
+        Some(message) => Err(SimError::Usage {
+            flag: format!("--metric {}", metric.name()),
+            message,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Drops the finest steps of a ladder the rule alone chose (down to 2) while the trade's
+/// [`estimate`] is beyond the work limits, unless `allow_large`; returns how many were dropped. A
+/// ladder given by `--steps` or `--levels` is left as given (the limit check then refuses it).
+pub fn fit_to_limits(
+    scene: &Scene,
+    ladder: &mut crate::ladder::Ladder,
+    repeats: usize,
+    allow_large: bool,
+) -> usize {
+    let mut dropped = 0;
+    while ladder.may_trim
+        && !allow_large
+        && ladder.steps.len() > 2
+        && estimate(scene, &ladder.steps, repeats)
+            .check("trade", false)
+            .is_err()
+    {
+        ladder.steps.pop();
+        dropped += 1;
+    }
+    dropped
 }
 
 /// Groups rows by method, in first-seen order.
@@ -501,12 +656,13 @@ pub fn by_method(rows: &[TradeRow]) -> Vec<(MethodSpec, Vec<&TradeRow>)> {
     groups
 }
 
-/// Writes the table as CSV to `csv` and the error-against-cost plot to `svg`.
+/// Writes the table as CSV to `csv` and the plot of `metric` against cost to `svg`.
 pub fn write_outputs(
     report: &TradeReport,
     scene: &Scene,
     csv: &Path,
     svg: &Path,
+    metric: Metric,
 ) -> Result<(), SimError> {
     write_atomic(csv, &to_csv(&report.rows))?;
     let curves: Vec<Curve> = by_method(&report.rows)
@@ -524,7 +680,7 @@ pub fn write_outputs(
             points: rows
                 .iter()
                 .filter(|r| r.failure.is_none())
-                .map(|r| (r.seconds, r.error))
+                .filter_map(|r| Some((r.seconds, metric.of(r)?)))
                 .collect(),
         })
         .collect();
@@ -532,13 +688,14 @@ pub fn write_outputs(
         &curves,
         svg,
         &format!(
-            "{} ({}), T = {}: error at T against cost",
+            "{} ({}), T = {}: {} against cost",
             scene.name,
             scene.system.kind(),
-            scene.duration
+            scene.duration,
+            metric.name()
         ),
         "cost: stepping time (s)",
-        "error at T",
+        metric.describe(),
     )
 }
 
@@ -555,6 +712,8 @@ mod tests {
             seconds: 1.0,
             error,
             max_energy_error: 0.0,
+            max_casimir_error: None,
+            max_momentum_map_error: None,
             failure: None,
         }
     }
@@ -605,6 +764,29 @@ mod tests {
             .map(|m| m.splitting.unwrap().order())
             .collect();
         assert_eq!(kicks, [2, 4, 6]);
+    }
+
+    #[test]
+    fn a_ladder_the_rule_chose_is_cut_to_the_work_limit_and_a_given_one_is_not() {
+        let mut scene = Scene::default_scene(Default::default()).unwrap();
+        scene.duration = 1e5;
+        // ωT = 1e5: (1e-18)^{1/8} = 2^{-7.5}, nine levels, 2.6e7 steps per run at the finest.
+        let mut ladder = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None);
+        assert_eq!(ladder.steps.len(), 9);
+        assert!(estimate(&scene, &ladder.steps, 3)
+            .check("t", false)
+            .is_err());
+        let dropped = fit_to_limits(&scene, &mut ladder, 3, false);
+        assert!(dropped > 0 && ladder.steps.len() >= 2, "{ladder:?}");
+        assert!(estimate(&scene, &ladder.steps, 3).check("t", false).is_ok());
+        // One level more is over the limit: only what had to go was dropped.
+        let mut one_more = ladder.steps.clone();
+        one_more.push(ladder.steps[ladder.steps.len() - 1] / 2.0);
+        assert!(estimate(&scene, &one_more, 3).check("t", false).is_err());
+        let mut given = crate::ladder::automatic_for(1.0, scene.duration, 0.1, Some(10));
+        assert_eq!(fit_to_limits(&scene, &mut given, 3, false), 0);
+        let mut allowed = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None);
+        assert_eq!(fit_to_limits(&scene, &mut allowed, 3, true), 0);
     }
 
     #[test]
