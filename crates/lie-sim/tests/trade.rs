@@ -353,3 +353,46 @@ fn bad_trade_flags_are_refused_naming_the_flag() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The conserved part of the momentum map on every group: the θ = ½ Lie–Poisson method keeps it
+/// to round-off (≤ 1e-13) and RKMK4 does not (> 1e-11): the free body on SE(3) (all of J), the
+/// satellite (the angular momentum about the centre), the planar body on a spring attached at the
+/// origin (its angular momentum about the origin) and the SO(4) geodesic (all of J).
+#[test]
+fn the_conserved_part_of_the_momentum_map_is_kept_by_lie_poisson_on_every_group() {
+    let dir = temp_dir("groups");
+    let se3 = std::fs::read_to_string(scenes_dir().join("rigid-body-se3.toml")).unwrap();
+    let se2 = std::fs::read_to_string(scenes_dir().join("planar-body-se2.toml")).unwrap();
+    let son = std::fs::read_to_string(scenes_dir().join("geodesic-so-n.toml")).unwrap();
+    let scenes = [
+        ("se3", se3.clone()),
+        (
+            "satellite",
+            se3.replace(
+                "gravitational_parameter = 0.0 ",
+                "gravitational_parameter = 10.0 ",
+            )
+            .replace("position = [0.0, 0.0, 0.0]", "position = [3.0, 0.5, 0.0]"),
+        ),
+        (
+            "spring",
+            se2.replace(
+                "mass = 1.0",
+                "mass = 1.0\nstiffness = 4.0\nattachment = [0.3, 0.1]",
+            )
+            .replace("position = [0.0, 0.0]", "position = [1.0, 0.5]"),
+        ),
+        ("son", son),
+    ];
+    assert!(scenes[1].1.contains("= 10.0") && scenes[2].1.contains("stiffness"));
+    for (name, text) in scenes {
+        let file = format!("{name}.toml");
+        std::fs::write(dir.join(&file), text).unwrap();
+        let t = trade(&dir, &[&file, "--steps", "0.05", "--horizon", "2"]);
+        let lp = t.values("lie-poisson,exp,0.5,-", "max_momentum_map_error")[0];
+        let rkmk = t.values("rkmk4,exp,-,-", "max_momentum_map_error")[0];
+        assert!(lp <= 1e-13, "{name}: lie-poisson {lp:e}");
+        assert!(rkmk > 1e-11, "{name}: rkmk4 {rkmk:e}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
