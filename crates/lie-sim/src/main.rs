@@ -503,6 +503,25 @@ fn cmd_trade(
             None => say!("  {:<52} -", m.to_string()),
         }
     }
+    let picks = trade::cheapest_per_target(&report.rows, metric, report.reference.estimated_error);
+    if !picks.is_empty() {
+        say!("cheapest run per target ({}):", metric.describe());
+        let floor = report.reference.estimated_error;
+        for (target, r) in picks {
+            let value = metric.of(r).unwrap_or(f64::NAN);
+            say!(
+                "  ≤ {target:.0e}  {} at h = {:.3e}: {} in {}",
+                r.method,
+                r.h,
+                if metric == trade::Metric::Error && value < floor {
+                    format!("below the reference floor {floor:.1e}")
+                } else {
+                    format!("{value:.2e}")
+                },
+                human_duration(std::time::Duration::from_secs_f64(r.seconds))
+            );
+        }
+    }
     let mut reasons: Vec<String> = Vec::new();
     for m in &report.inapplicable {
         if let Some(why) = scene::inapplicable(m, &scene.system) {

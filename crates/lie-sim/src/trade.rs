@@ -23,12 +23,13 @@
 use crate::error::SimError;
 use crate::invariants::Monitor;
 use crate::output::write_atomic;
-use crate::plot::{plot_loglog, Curve};
+use crate::plot::{plot_loglog, Annotations, Curve, Marker, SeriesStyle};
 use crate::run::Cell;
 use crate::scene::{steps_for, Method, MethodSpec, Scene, System, TauKind};
 use crate::sim::{build, Simulation};
 use integrators::splitting::SplittingScheme;
 use integrators::CompositionScheme;
+use plotters::style::RGBColor;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -656,7 +657,99 @@ pub fn by_method(rows: &[TradeRow]) -> Vec<(MethodSpec, Vec<&TradeRow>)> {
     groups
 }
 
-/// Writes the table as CSV to `csv` and the plot of `metric` against cost to `svg`.
+/// The colour of a method's family in the plot: Lie–Poisson, Euler–Poincaré, Euler–Arnold, the
+/// compositions (of Lie–Poisson), the splittings (Strang, its compositions, kinetic–kick), the
+/// exact flow, the Runge–Kutta baselines (rk4, rkmk4) and the modified Lie–Poisson method.
+pub fn family(m: &MethodSpec) -> (&'static str, RGBColor) {
+    match m.method {
+        Method::LiePoisson if m.modified => ("modified", RGBColor(227, 119, 194)),
+        Method::LiePoisson if m.composition.is_some() => ("compositions", RGBColor(44, 160, 44)),
+        Method::LiePoisson => ("lie-poisson", RGBColor(31, 119, 180)),
+        Method::EulerPoincare => ("euler-poincare", RGBColor(255, 127, 14)),
+        Method::EulerArnold => ("euler-arnold", RGBColor(140, 86, 75)),
+        Method::Splitting | Method::KineticKick => ("splitting", RGBColor(148, 103, 189)),
+        Method::Exact => ("exact", RGBColor(0, 0, 0)),
+        Method::Rk4 | Method::Rkmk4 => ("rk4/rkmk4", RGBColor(214, 39, 40)),
+    }
+}
+
+/// How a method's series is drawn: the colour of its [`family`]; τ = cayley (and the second
+/// member of a pair without τ: kinetic–kick beside splitting, rkmk4 beside rk4) dashed with
+/// hollow markers, τ = exp solid with filled ones; the marker by θ (0 ▲, ½ ●, 1 ■) or by
+/// scheme (order-4 triple jump ▲, McLachlan's ×, order 6 ■, order 8 ◆; the kinetic–kick
+/// schemes ●, ▲, ■ by order; the exact flow ◆).
+pub fn style_of(m: &MethodSpec) -> SeriesStyle {
+    let second =
+        m.tau == Some(TauKind::Cayley) || matches!(m.method, Method::KineticKick | Method::Rkmk4);
+    let marker = if let Some(c) = &m.composition {
+        match c.name() {
+            "triple-jump-4" => Marker::Triangle,
+            "mclachlan-4" => Marker::Cross,
+            "kahan-li-6" => Marker::Square,
+            _ => Marker::Diamond,
+        }
+    } else if let Some(s) = &m.splitting {
+        match s.order() {
+            2 => Marker::Circle,
+            4 => Marker::Triangle,
+            _ => Marker::Square,
+        }
+    } else if m.method == Method::Exact {
+        Marker::Diamond
+    } else {
+        match m.theta {
+            Some(0.0) => Marker::Triangle,
+            Some(1.0) => Marker::Square,
+            _ => Marker::Circle,
+        }
+    };
+    SeriesStyle {
+        color: family(m).1,
+        dashed: second,
+        marker,
+        filled: !second,
+    }
+}
+
+/// The cheapest run (least stepping time) meeting each decade target 10⁻¹, 10⁻², … of `metric`,
+/// loosest target first, down to the smallest value measured and, for the error at T, no lower
+/// than `floor` (the reference's estimated error: below it nothing is resolved). A run cheapest
+/// for several consecutive targets is listed once, at the tightest.
+pub fn cheapest_per_target(rows: &[TradeRow], metric: Metric, floor: f64) -> Vec<(f64, &TradeRow)> {
+    let measured: Vec<(f64, &TradeRow)> = rows
+        .iter()
+        .filter(|r| r.failure.is_none() && r.seconds.is_finite())
+        .filter_map(|r| Some((metric.of(r)?, r)))
+        .filter(|(v, _)| v.is_finite())
+        .collect();
+    let lowest = measured
+        .iter()
+        .map(|(v, _)| *v)
+        .fold(f64::INFINITY, f64::min);
+    let mut out: Vec<(f64, &TradeRow)> = Vec::new();
+    for k in 1..=16 {
+        let target = 10f64.powi(-k);
+        if (metric == Metric::Error && target < floor) || target < lowest {
+            break;
+        }
+        let Some(&(_, best)) = measured
+            .iter()
+            .filter(|(v, _)| *v <= target)
+            .min_by(|a, b| a.1.seconds.total_cmp(&b.1.seconds))
+        else {
+            continue;
+        };
+        match out.last_mut() {
+            Some(last) if std::ptr::eq(last.1, best) => last.0 = target,
+            _ => out.push((target, best)),
+        }
+    }
+    out
+}
+
+/// Writes the table as CSV to `csv` and the plot of `metric` against cost to `svg`: one series
+/// per method ([`style_of`]), the reference's estimated error as a dashed line (error at T), and
+/// the [`cheapest_per_target`] runs ringed and labelled.
 pub fn write_outputs(
     report: &TradeReport,
     scene: &Scene,
@@ -668,15 +761,8 @@ pub fn write_outputs(
     let curves: Vec<Curve> = by_method(&report.rows)
         .into_iter()
         .map(|(m, rows)| Curve {
-            label: format!(
-                "{}{} {}{}",
-                m.composition
-                    .as_ref()
-                    .map_or(String::new(), |c| format!("{} ∘ ", c.name())),
-                m.method.name(),
-                m.tau.map_or(String::new(), |t| t.name().to_string()),
-                m.theta.map_or(String::new(), |t| format!(" θ={t}"))
-            ),
+            label: m.to_string(),
+            style: style_of(&m),
             points: rows
                 .iter()
                 .filter(|r| r.failure.is_none())
@@ -684,8 +770,35 @@ pub fn write_outputs(
                 .collect(),
         })
         .collect();
+    let floor = report.reference.estimated_error;
+    let annotations = Annotations {
+        hline: (metric == Metric::Error).then(|| {
+            (
+                floor,
+                format!("reference floor: its estimated error {floor:.1e}"),
+            )
+        }),
+        labels: cheapest_per_target(&report.rows, metric, floor)
+            .into_iter()
+            .filter_map(|(target, r)| {
+                let value = metric.of(r)?;
+                // An error below the reference's floor is not resolved: labelled on the floor.
+                let y = if metric == Metric::Error {
+                    value.max(floor)
+                } else {
+                    value
+                };
+                Some((
+                    r.seconds,
+                    y,
+                    format!("≤ {target:.0e}: {} h = {:.3e}", r.method, r.h),
+                ))
+            })
+            .collect(),
+    };
     plot_loglog(
         &curves,
+        &annotations,
         svg,
         &format!(
             "{} ({}), T = {}: {} against cost",
@@ -787,6 +900,46 @@ mod tests {
         assert_eq!(fit_to_limits(&scene, &mut given, 3, false), 0);
         let mut allowed = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None);
         assert_eq!(fit_to_limits(&scene, &mut allowed, 3, true), 0);
+    }
+
+    #[test]
+    fn every_candidate_is_drawn_in_its_own_style_and_families_share_a_colour() {
+        let styles: Vec<SeriesStyle> = candidates().iter().map(style_of).collect();
+        for (i, a) in styles.iter().enumerate() {
+            for b in &styles[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
+        let families: Vec<&str> = candidates().iter().map(|m| family(m).0).collect();
+        let mut distinct = families.clone();
+        distinct.sort();
+        distinct.dedup();
+        assert_eq!(distinct.len(), 8);
+        for (m, f) in candidates().iter().zip(&families) {
+            for (n, g) in candidates().iter().zip(&families) {
+                assert_eq!(f == g, family(m).1 == family(n).1, "{m} {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn cheapest_per_target_takes_the_least_time_meeting_each_decade_once() {
+        let mut rows = Vec::new();
+        // (seconds, error): a cheap coarse run at 5e-3, a dearer one at 2e-5, the dearest 1e-9.
+        for (s, e) in [(1.0, 5e-3), (2.0, 2e-5), (8.0, 1e-9), (9.0, 3e-3)] {
+            let mut r = row(0.1, e);
+            r.seconds = s;
+            rows.push(r);
+        }
+        let picks: Vec<(f64, f64)> = cheapest_per_target(&rows, Metric::Error, 1e-12)
+            .iter()
+            .map(|(t, r)| (*t, r.seconds))
+            .collect();
+        // 1e-1, 1e-2: the 1 s run (listed at 1e-2); 1e-3 … 1e-4: the 2 s run; 1e-5 … 1e-9: 8 s.
+        assert_eq!(picks, [(1e-2, 1.0), (1e-4, 2.0), (1e-9, 8.0)]);
+        // The reference's floor stops the targets: below 1e-6 nothing is resolved.
+        let picks = cheapest_per_target(&rows, Metric::Error, 1e-6);
+        assert_eq!(picks.last().map(|p| (p.0, p.1.seconds)), Some((1e-6, 8.0)));
     }
 
     #[test]

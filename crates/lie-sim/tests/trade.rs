@@ -396,3 +396,46 @@ fn the_conserved_part_of_the_momentum_map_is_kept_by_lie_poisson_on_every_group(
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The plot marks the reference floor (error at T only), rings and labels the cheapest run per
+/// target, and the summary lists them.
+#[test]
+fn the_plot_marks_the_floor_and_labels_the_cheapest_runs() {
+    let dir = temp_dir("plot");
+    let scene = scenes_dir().join("free-rigid-body.toml");
+    let scene = scene.to_str().unwrap();
+    for (metric, floor) in [("error", true), ("energy", false)] {
+        let o = lie_sim(
+            &[
+                "trade",
+                scene,
+                "--out",
+                "w.csv",
+                "--repeats",
+                "1",
+                "--steps",
+                "0.2,0.1",
+                "--horizon",
+                "2",
+                "--metric",
+                metric,
+            ],
+            &dir,
+        );
+        assert!(o.status.success(), "{}", stderr(&o));
+        let out = stdout(&o);
+        assert!(out.contains("cheapest run per target"), "{out}");
+        let svg = std::fs::read_to_string(dir.join("w.svg")).unwrap();
+        assert_eq!(svg.contains("reference floor"), floor, "{metric}");
+        assert!(svg.contains("≤ 1e-"), "{metric}: no labelled run");
+        // The legend names the series.
+        for m in [
+            "lie-poisson (τ = cayley, θ = 1)",
+            "rkmk4 (τ = exp)",
+            "exact",
+        ] {
+            assert!(svg.contains(m), "{m} not in the legend");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
