@@ -312,7 +312,7 @@ fn bad_trade_flags_are_refused_naming_the_flag() {
         (vec!["--steps", "0.1,NaN"], "--steps"),
         (vec!["--steps", "inf"], "--steps"),
         (vec!["--steps", "0.1,x"], "--steps"),
-        (vec!["--steps", "0.1,0.5", "--horizon", "0.2"], "--steps"),
+        (vec!["--steps", "0.1,0.25", "--horizon", "0.2"], "--steps"),
         (vec!["--steps", "0.1", "--levels", "3"], "--levels"),
         (vec!["--step", "0.1"], "--step"),
         (vec!["--horizon", "0"], "--horizon"),
