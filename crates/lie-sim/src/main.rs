@@ -110,6 +110,7 @@ enum Command {
     /// 1e-13 reference floor over T, at most 10 levels (--levels fixes the count); finest levels
     /// are dropped when the work limit would be exceeded. Each run reports the error at T and the
     /// maximum relative energy, Casimir and spatial momentum-map errors over the run.
+    #[command(mut_arg("step", |a| a.hide(true)))]
     Trade {
         /// The scene file (TOML); the embedded default scene when left out.
         scene: Option<PathBuf>,
