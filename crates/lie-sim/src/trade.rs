@@ -334,10 +334,11 @@ pub struct TradeRow {
     pub error: f64,
     /// Maximum relative energy error (NaN when the run failed).
     pub max_energy_error: f64,
-    /// Maximum relative Casimir error, where the system has a Casimir (NaN when the run failed).
+    /// Maximum relative Casimir error, where the system has a Casimir (`None` also when the run
+    /// failed: see `failure`).
     pub max_casimir_error: Option<f64>,
     /// Maximum relative error of the conserved part of the spatial momentum map, where it applies
-    /// (NaN when the run failed).
+    /// (`None` also when the run failed).
     pub max_momentum_map_error: Option<f64>,
     /// Why the run failed, if it did.
     pub failure: Option<String>,
@@ -420,8 +421,8 @@ pub fn trade(
                     seconds: f64::NAN,
                     error: f64::NAN,
                     max_energy_error: f64::NAN,
-                    max_casimir_error: Some(f64::NAN),
-                    max_momentum_map_error: Some(f64::NAN),
+                    max_casimir_error: None,
+                    max_momentum_map_error: None,
                     failure: Some(e.to_string()),
                 },
             };
@@ -508,7 +509,7 @@ fn optional(x: Option<f64>) -> String {
     x.map_or_else(|| "-".into(), |v| format!("{v:.3e}"))
 }
 
-/// The rows as CSV; a measure that does not apply is an empty cell.
+/// The rows as CSV; a measure that does not apply (or of a failed run) is an empty cell.
 pub fn to_csv(rows: &[TradeRow]) -> String {
     let mut s = String::from(
         "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,\
