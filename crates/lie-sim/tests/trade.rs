@@ -155,7 +155,7 @@ fn lie_poisson_keeps_casimir_and_momentum_map_and_rk4_drifts_at_order_4() {
         &[
             scene.to_str().unwrap(),
             "--steps",
-            "0.4,0.2,0.1",
+            "0.2,0.1,0.05",
             "--horizon",
             "10",
             "--metric",
@@ -175,10 +175,11 @@ fn lie_poisson_keeps_casimir_and_momentum_map_and_rk4_drifts_at_order_4() {
     let h = t.values("rk4,-,-,-", "h");
     let c = t.values("rk4,-,-,-", "max_casimir_error");
     let j = t.values("rk4,-,-,-", "max_momentum_map_error");
-    assert!(c.iter().all(|&e| e > 1e-10), "{c:?}");
+    // 4.1e-9, 2.3e-10, 1.5e-11 (the Lie–Poisson values: 3e-16).
+    assert!(c.iter().all(|&e| e > 1e-11), "{c:?}");
     assert!(j.iter().all(|&e| e > 1e-10), "{j:?}");
     let p = slope(&h, &c);
-    assert!((p - 4.0).abs() < 0.2, "rk4 Casimir order {p:.3}: {c:?}");
+    assert!((p - 4.0).abs() < 0.1, "rk4 Casimir order {p:.3}: {c:?}");
     let svg = std::fs::read_to_string(dir.join("w.svg")).unwrap();
     assert!(svg.contains("max relative Casimir error"), "the axis");
     std::fs::remove_dir_all(&dir).unwrap();
