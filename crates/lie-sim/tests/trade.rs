@@ -405,7 +405,10 @@ fn the_plot_marks_the_floor_and_labels_the_cheapest_runs() {
     let dir = temp_dir("plot");
     let scene = scenes_dir().join("free-rigid-body.toml");
     let scene = scene.to_str().unwrap();
-    for (metric, floor) in [("error", true), ("energy", false)] {
+    for (metric, floor, axis) in [
+        ("error", true, "error at T"),
+        ("energy", false, "max relative energy error"),
+    ] {
         let o = lie_sim(
             &[
                 "trade",
@@ -428,6 +431,7 @@ fn the_plot_marks_the_floor_and_labels_the_cheapest_runs() {
         assert!(out.contains("cheapest run per target"), "{out}");
         let svg = std::fs::read_to_string(dir.join("w.svg")).unwrap();
         assert_eq!(svg.contains("reference floor"), floor, "{metric}");
+        assert!(svg.contains(axis), "{metric}: the axis");
         assert!(svg.contains("≤ 1e-"), "{metric}: no labelled run");
         // The legend names the series.
         for m in [
