@@ -108,7 +108,7 @@ pub fn choose(
                     continue;
                 }
             };
-            let Ok(run) = timed_run(sim.as_mut(), scene.duration, h) else {
+            let Ok(run) = timed_run(sim.as_mut(), &scene.system, scene.duration, h) else {
                 done[k] = true; // a failed step: finer steps of a failing method are not tried
                 continue;
             };

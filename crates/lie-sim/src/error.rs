@@ -130,6 +130,14 @@ pub enum SimError {
         /// What happened, with the best value reached.
         message: String,
     },
+    /// A command-line value that parses but does not fit the scene (a step longer than T).
+    #[error("{flag}: {message}")]
+    Usage {
+        /// The flag, e.g. `--steps`.
+        flag: String,
+        /// What is wrong with its value.
+        message: String,
+    },
     /// The command would take more steps or write more bytes than the limits of `bounds`.
     #[error("{what}: {message}; pass --allow-large to run it anyway")]
     TooLarge {

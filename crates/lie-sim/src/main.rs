@@ -39,6 +39,8 @@ fn show_progress() -> bool {
 mod bounds;
 mod choose;
 mod error;
+mod invariants;
+mod ladder;
 mod output;
 mod plot;
 mod run;
@@ -100,18 +102,41 @@ enum Command {
         out: Option<PathBuf>,
     },
     /// Work-precision trade: every applicable method over a ladder of steps against a reference.
+    ///
+    /// The ladder: with --steps, exactly those steps; otherwise from the scene's time scale ω (the
+    /// initial body angular velocity |ξ₀| = |𝕀⁻¹Π₀|, or the potential's frequency when larger:
+    /// the heavy top's pendulum, the satellite's orbit, the planar body's spring): h = 1/ω (hω = 1,
+    /// near the stability edge; at most T), halved down to where an order-8 method reaches the
+    /// 1e-13 reference floor over T, at most 10 levels (--levels fixes the count); finest levels
+    /// are dropped when the work limit would be exceeded. Each run reports the error at T and the
+    /// maximum relative energy, Casimir and spatial momentum-map errors over the run.
+    #[command(mut_arg("step", |a| a.hide(true)))]
     Trade {
         /// The scene file (TOML); the embedded default scene when left out.
         scene: Option<PathBuf>,
         /// Table CSV (default: `target/lie-sim/<scene>-trade.csv`).
         #[arg(short, long)]
         out: Option<PathBuf>,
-        /// Error-against-cost SVG [default: the table's path with extension .svg].
+        /// Metric-against-cost SVG [default: the table's path with extension .svg].
         #[arg(long)]
         plot: Option<PathBuf>,
-        /// Number of step sizes h, h/2, …, h/2^(levels−1), from the scene's step h.
-        #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(2..=12))]
-        levels: u32,
+        /// Explicit steps, comma-separated (e.g. 0.1,0.05,0.02): each finite, positive, ≤ T.
+        #[arg(long, value_name = "H,H,…", allow_hyphen_values = true,
+              value_parser = parse_steps, conflicts_with = "levels")]
+        steps: Option<ladder::StepList>,
+        /// Number of levels of the automatic ladder 1/ω, 1/(2ω), … [default: down to the
+        /// reference floor, at most 10].
+        #[arg(long, value_parser = clap::value_parser!(u32).range(2..=12))]
+        levels: Option<u32>,
+        /// What the plot draws against cost: the error at T, or the maximum relative energy,
+        /// Casimir (|Π|² on SO(3)) or spatial momentum-map (R Π; the heavy top: e₃·R Π) error
+        /// over the run. Every one is in the table and the CSV.
+        #[arg(long, value_enum, default_value_t = trade::Metric::Error)]
+        metric: trade::Metric,
+        /// The horizon T of the trade (replaces the scene's duration).
+        #[arg(long, value_name = "T", allow_hyphen_values = true,
+              value_parser = parse_horizon, conflicts_with = "duration")]
+        horizon: Option<f64>,
         /// Repeat each run this many times and keep the fastest (timings on a busy machine).
         #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=100))]
         repeats: u32,
@@ -206,6 +231,18 @@ fn parse_budget(s: &str) -> Result<std::time::Duration, String> {
         return Err(format!("{s:?}: the budget must be positive"));
     }
     std::time::Duration::try_from_secs_f64(x * scale).map_err(|e| format!("{s:?}: {e}"))
+}
+
+fn parse_steps(s: &str) -> Result<ladder::StepList, String> {
+    ladder::parse_steps(s).map(ladder::StepList)
+}
+
+fn parse_horizon(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        Ok(_) => Err("the horizon must be finite and positive".into()),
+        Err(_) => Err("not a number".into()),
+    }
 }
 
 fn parse_shard(s: &str) -> Result<Shard, String> {
@@ -390,31 +427,59 @@ fn cmd_plot(csv: &Path, out: Option<PathBuf>) -> Result<(), SimError> {
     Ok(())
 }
 
+#[allow(clippy::too_many_arguments)] // one per command-line option
 fn cmd_trade(
     scene_path: Option<&Path>,
     out: Option<PathBuf>,
     plot_path: Option<PathBuf>,
-    levels: u32,
+    steps: Option<ladder::StepList>,
+    levels: Option<u32>,
+    metric: trade::Metric,
     repeats: u32,
     overrides: OverrideArgs,
 ) -> Result<(), SimError> {
+    if overrides.step.is_some() {
+        return Err(SimError::Usage {
+            flag: "--step".into(),
+            message: "the trade does not run the scene's step: give its steps with --steps".into(),
+        });
+    }
     let (scene, stem) = load(scene_path, overrides)?;
     let csv = out.unwrap_or_else(|| default_path(&stem, "-trade.csv"));
     let svg = plot_path.unwrap_or_else(|| csv.with_extension("svg"));
     output::refuse_clobbering(&[&csv, &svg], scene_path.as_slice())?;
-    trade::estimate(&scene, levels as usize, repeats as usize)
+    trade::check_metric(&scene, metric)?;
+    let mut ladder = match steps {
+        Some(list) => ladder::explicit(list.0, scene.duration)?,
+        None => ladder::automatic(&scene, levels.map(|l| l as usize))?,
+    };
+    let dropped =
+        trade::fit_to_limits(&scene, &mut ladder, repeats as usize, overrides.allow_large);
+    trade::estimate(&scene, &ladder.steps, repeats as usize)
         .check("trade", overrides.allow_large)?;
     say!(
-        "lie-sim trade: {} ({}), T = {}, h = {} … {}",
+        "lie-sim trade: {} ({}), T = {}, {} steps: {}",
         scene.name,
         scene.system.kind(),
         scene.duration,
-        scene.step,
-        scene.step / f64::powi(2.0, levels as i32 - 1)
+        ladder.steps.len(),
+        ladder
+            .steps
+            .iter()
+            .map(|h| format!("{h:.4e}"))
+            .collect::<Vec<_>>()
+            .join(", ")
     );
+    say!("  ladder: {}", ladder.rule);
+    if dropped > 0 {
+        say!(
+            "  ladder: the {dropped} finest levels dropped to stay within the work limit \
+             (--allow-large keeps them)"
+        );
+    }
     say!("{}", trade::table_header());
     let bar = show_progress().then(|| {
-        let runs = trade::candidates().len() * levels as usize;
+        let runs = trade::candidates().len() * ladder.steps.len();
         let b = indicatif::ProgressBar::new(runs as u64);
         if let Ok(style) = indicatif::ProgressStyle::with_template(
             "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} runs (eta {eta})",
@@ -423,7 +488,7 @@ fn cmd_trade(
         }
         b
     });
-    let report = trade::trade(&scene, levels as usize, repeats as usize, |r| match &bar {
+    let report = trade::trade(&scene, &ladder.steps, repeats as usize, |r| match &bar {
         Some(b) => {
             b.inc(1);
             b.suspend(|| say!("{}", trade::table_line(r)));
@@ -451,6 +516,25 @@ fn cmd_trade(
             None => say!("  {:<52} -", m.to_string()),
         }
     }
+    let picks = trade::cheapest_per_target(&report.rows, metric, report.reference.estimated_error);
+    if !picks.is_empty() {
+        say!("cheapest run per target ({}):", metric.describe());
+        let floor = report.reference.estimated_error;
+        for (target, r) in picks {
+            let value = metric.of(r).unwrap_or(f64::NAN);
+            say!(
+                "  ≤ {target:.0e}  {} at h = {:.3e}: {} in {}",
+                r.method,
+                r.h,
+                if metric == trade::Metric::Error && value < floor {
+                    format!("below the reference floor {floor:.1e}")
+                } else {
+                    format!("{value:.2e}")
+                },
+                human_duration(std::time::Duration::from_secs_f64(r.seconds))
+            );
+        }
+    }
     let mut reasons: Vec<String> = Vec::new();
     for m in &report.inapplicable {
         if let Some(why) = scene::inapplicable(m, &scene.system) {
@@ -473,7 +557,7 @@ fn cmd_trade(
             why: "the integrators crate provides none of them yet".into(),
         });
     }
-    trade::write_outputs(&report, &scene, &csv, &svg)?;
+    trade::write_outputs(&report, &scene, &csv, &svg, metric)?;
     say!("table: {}\nplot:  {}", csv.display(), svg.display());
     Ok(())
 }
@@ -727,10 +811,27 @@ fn main() -> ExitCode {
             scene,
             out,
             plot,
+            steps,
             levels,
+            metric,
+            horizon,
             repeats,
-            overrides,
-        }) => cmd_trade(scene.as_deref(), out, plot, levels, repeats, overrides),
+            mut overrides,
+        }) => {
+            if horizon.is_some() {
+                overrides.duration = horizon;
+            }
+            cmd_trade(
+                scene.as_deref(),
+                out,
+                plot,
+                steps,
+                levels,
+                metric,
+                repeats,
+                overrides,
+            )
+        }
         Some(Command::Sweep {
             scene,
             out,

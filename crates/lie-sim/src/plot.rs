@@ -237,46 +237,104 @@ pub fn plot_trajectory(traj: &Trajectory, out: &Path, title: &str) -> Result<(),
     file.commit()
 }
 
+/// The marker drawn at each point of a series.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Marker {
+    /// ●
+    Circle,
+    /// ▲
+    Triangle,
+    /// ■
+    Square,
+    /// ◆
+    Diamond,
+    /// ×
+    Cross,
+}
+
+/// How a series is drawn: its colour, a dashed or solid line, its marker, filled or hollow.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeriesStyle {
+    /// Line and marker colour.
+    pub color: RGBColor,
+    /// Dashed (else solid) line.
+    pub dashed: bool,
+    /// The marker.
+    pub marker: Marker,
+    /// Filled (else hollow) marker.
+    pub filled: bool,
+}
+
 /// One curve of a log–log plot.
 pub struct Curve {
     /// Legend label.
     pub label: String,
+    /// How it is drawn.
+    pub style: SeriesStyle,
     /// Points (x, y), both positive.
     pub points: Vec<(f64, f64)>,
 }
 
-/// Twenty distinguishable colours (matplotlib's tab20 order, dark shades first), so that every curve
-/// of a full trade (up to 20 methods) has its own.
-fn color20(i: usize) -> RGBColor {
-    const COLORS: [RGBColor; 20] = [
-        RGBColor(31, 119, 180),
-        RGBColor(255, 127, 14),
-        RGBColor(44, 160, 44),
-        RGBColor(214, 39, 40),
-        RGBColor(148, 103, 189),
-        RGBColor(140, 86, 75),
-        RGBColor(227, 119, 194),
-        RGBColor(127, 127, 127),
-        RGBColor(188, 189, 34),
-        RGBColor(23, 190, 207),
-        RGBColor(174, 199, 232),
-        RGBColor(255, 187, 120),
-        RGBColor(152, 223, 138),
-        RGBColor(255, 152, 150),
-        RGBColor(197, 176, 213),
-        RGBColor(196, 156, 148),
-        RGBColor(247, 182, 210),
-        RGBColor(0, 0, 0),
-        RGBColor(219, 219, 141),
-        RGBColor(158, 218, 229),
-    ];
-    COLORS[i % COLORS.len()]
+/// What is drawn besides the curves: a horizontal line with its legend, and labelled points.
+#[derive(Default)]
+pub struct Annotations {
+    /// A horizontal line at y (e.g. the reference's floor) and its label.
+    pub hline: Option<(f64, String)>,
+    /// Points (x, y) to ring and label.
+    pub labels: Vec<(f64, f64, String)>,
 }
 
-/// Draws curves on log–log axes to `out` (atomically), with the legend beside the chart; points
-/// with a non-positive or non-finite coordinate are left out (they have no place on log axes).
+/// Binds `$mk` to a maker of the marker of `$style` at a position p (pixel offsets around it)
+/// and evaluates `$body`: one arm per marker shape, as each shape is its own element type.
+macro_rules! with_marker {
+    ($style:expr, |$mk:ident| $body:expr) => {{
+        let st = $style;
+        let shape = if st.filled {
+            st.color.filled()
+        } else {
+            st.color.stroke_width(1)
+        };
+        match st.marker {
+            Marker::Circle => {
+                let $mk = |p| EmptyElement::at(p) + Circle::new((0, 0), 4, shape);
+                $body
+            }
+            Marker::Triangle => {
+                let $mk = |p| EmptyElement::at(p) + TriangleMarker::new((0, 0), 5, shape);
+                $body
+            }
+            Marker::Square => {
+                let $mk = |p| EmptyElement::at(p) + Rectangle::new([(-3, -3), (3, 3)], shape);
+                $body
+            }
+            Marker::Diamond if st.filled => {
+                let $mk = |p| {
+                    EmptyElement::at(p)
+                        + Polygon::new(vec![(0, -5), (5, 0), (0, 5), (-5, 0)], shape)
+                };
+                $body
+            }
+            Marker::Diamond => {
+                let $mk = |p| {
+                    EmptyElement::at(p)
+                        + PathElement::new(vec![(0, -5), (5, 0), (0, 5), (-5, 0), (0, -5)], shape)
+                };
+                $body
+            }
+            Marker::Cross => {
+                let $mk = |p| EmptyElement::at(p) + Cross::new((0, 0), 4, st.color.stroke_width(2));
+                $body
+            }
+        }
+    }};
+}
+
+/// Draws curves on log–log axes to `out` (atomically), with the legend (line and marker of each
+/// curve) beside the chart and the `annotations`; points with a non-positive or non-finite
+/// coordinate are left out (they have no place on log axes).
 pub fn plot_loglog(
     curves: &[Curve],
+    annotations: &Annotations,
     out: &Path,
     title: &str,
     x_desc: &str,
@@ -288,21 +346,31 @@ pub fn plot_loglog(
         .flat_map(|c| c.points.iter().copied())
         .filter(ok)
         .collect();
-    let bounds = |f: fn(&(f64, f64)) -> f64| {
-        let lo = all.iter().map(f).fold(f64::INFINITY, f64::min);
-        let hi = all.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
+    let floor = annotations
+        .hline
+        .as_ref()
+        .map(|(y, _)| *y)
+        .filter(|y| y.is_finite() && *y > 0.0);
+    let bounds = |f: fn(&(f64, f64)) -> f64, extra: Option<f64>| {
+        let lo = all.iter().map(f).chain(extra).fold(f64::INFINITY, f64::min);
+        let hi = all
+            .iter()
+            .map(f)
+            .chain(extra)
+            .fold(f64::NEG_INFINITY, f64::max);
         if lo.is_finite() {
             (lo / 2.0, hi * 2.0)
         } else {
             (1e-3, 1.0)
         }
     };
-    let (x0, x1) = bounds(|p| p.0);
-    let (y0, y1) = bounds(|p| p.1);
+    let (x0, x1) = bounds(|p| p.0, None);
+    let (y0, y1) = bounds(|p| p.1, floor);
+    let height = 750.max(80 + 20 * (curves.len() as u32 + 1));
 
     let file = AtomicFile::new(out)?;
     {
-        let root = SVGBackend::new(file.temp_path(), (1300, 750)).into_drawing_area();
+        let root = SVGBackend::new(file.temp_path(), (1400, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| plot_error(out, e))?;
         let (left, right) = root.split_horizontally(1000);
         let mut chart = ChartBuilder::on(&left)
@@ -320,28 +388,70 @@ pub fn plot_loglog(
             .y_label_formatter(&|v| format!("{v:.0e}"))
             .draw()
             .map_err(|e| plot_error(out, e))?;
-        for (i, c) in curves.iter().enumerate() {
-            let pts: Vec<(f64, f64)> = c.points.iter().copied().filter(ok).collect();
-            let col = color20(i);
+        let font = ("sans-serif", 13).into_font().color(&BLACK);
+        if let (Some(y), Some((_, label))) = (floor, &annotations.hline) {
+            let grey = RGBColor(90, 90, 90);
             chart
-                .draw_series(LineSeries::new(pts.clone(), col.stroke_width(2)))
-                .map_err(|e| plot_error(out, e))?;
-            chart
-                .draw_series(pts.iter().map(|&p| Circle::new(p, 3, col.filled())))
-                .map_err(|e| plot_error(out, e))?;
-            // The legend, drawn by hand in the right-hand strip so that it never hides a curve.
-            let y = 60 + 22 * i as i32;
-            right
-                .draw(&PathElement::new(
-                    vec![(10, y), (40, y)],
-                    col.stroke_width(3),
+                .draw_series(DashedLineSeries::new(
+                    [(x0, y), (x1, y)],
+                    10,
+                    5,
+                    grey.stroke_width(2),
                 ))
                 .map_err(|e| plot_error(out, e))?;
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at((x0, y)) + Text::new(label.clone(), (8, 4), font.clone()),
+                ))
+                .map_err(|e| plot_error(out, e))?;
+        }
+        for (i, c) in curves.iter().enumerate() {
+            let pts: Vec<(f64, f64)> = c.points.iter().copied().filter(ok).collect();
+            let st = c.style;
+            if st.dashed {
+                chart
+                    .draw_series(DashedLineSeries::new(
+                        pts.clone(),
+                        6,
+                        4,
+                        st.color.stroke_width(2),
+                    ))
+                    .map_err(|e| plot_error(out, e))?;
+            } else {
+                chart
+                    .draw_series(LineSeries::new(pts.clone(), st.color.stroke_width(2)))
+                    .map_err(|e| plot_error(out, e))?;
+            }
+            with_marker!(st, |mk| chart.draw_series(pts.iter().map(|&p| mk(p))))
+                .map_err(|e| plot_error(out, e))?;
+            // The legend, drawn by hand in the right-hand strip so that it never hides a curve.
+            let y = 50 + 20 * i as i32;
+            let sample = vec![(10, y), (50, y)];
+            if st.dashed {
+                right.draw(&plotters::element::DashedPathElement::new(
+                    sample,
+                    6,
+                    4,
+                    st.color.stroke_width(2),
+                ))
+            } else {
+                right.draw(&PathElement::new(sample, st.color.stroke_width(2)))
+            }
+            .map_err(|e| plot_error(out, e))?;
+            with_marker!(st, |mk| right.draw(&mk((30, y)))).map_err(|e| plot_error(out, e))?;
             right
-                .draw(&Text::new(
-                    c.label.clone(),
-                    (48, y - 7),
-                    ("sans-serif", 14).into_font().color(&BLACK),
+                .draw(&Text::new(c.label.clone(), (58, y - 7), font.clone()))
+                .map_err(|e| plot_error(out, e))?;
+        }
+        for (x, y, label) in &annotations.labels {
+            if !ok(&(*x, *y)) {
+                continue;
+            }
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at((*x, *y))
+                        + Circle::new((0, 0), 8, BLACK.stroke_width(1))
+                        + Text::new(label.clone(), (10, -16), font.clone()),
                 ))
                 .map_err(|e| plot_error(out, e))?;
         }

@@ -51,6 +51,13 @@ pub trait Simulation {
     fn energy(&self) -> f64;
     /// The Casimir the system monitors (|Π|² for the free rigid body), if it has one.
     fn casimir(&self) -> Option<f64>;
+    /// Current body velocity ξ = ∂h/∂μ (Ω = 𝕀⁻¹Π for the rigid body), in the basis of μ.
+    fn velocity(&self) -> Vec<f64>;
+    /// The spatial momentum map `J = Ad*_{g⁻¹} μ` (R Π on SO(3), (R Π + x × R P, R P) on SE(3)),
+    /// in the basis of μ, or `None` when g is not reconstructed. Conserved by the flow of a
+    /// left-invariant system; which part of it a system with a potential keeps is
+    /// [`crate::invariants::conserved_momentum_map`].
+    fn spatial_momentum(&self) -> Option<Vec<f64>>;
     /// What the method is and keeps, as it describes itself (`integrators::MethodInfo`).
     fn info(&self) -> integrators::MethodInfo;
 
@@ -786,6 +793,16 @@ impl<I: Integrator> Simulation for Adapter<I> {
     fn casimir(&self) -> Option<f64> {
         self.integrator.casimir()
     }
+    fn velocity(&self) -> Vec<f64> {
+        self.0.velocity().to_vec()
+    }
+    fn spatial_momentum(&self) -> Option<Vec<f64>> {
+        // Ad*_{g⁻¹} μ = (Ad_{g⁻¹})ᵀ μ: `coadjoint_apply` is the dual map of Ad, so it is applied
+        // to g⁻¹ (on SO(3), Ad_{R⁻¹} = Rᵀ and J = R Π).
+        self.0
+            .configuration()
+            .map(|g| g.inverse().coadjoint_apply(&self.0.momentum()).to_vec())
+    }
     fn info(&self) -> integrators::MethodInfo {
         self.integrator.info()
     }
@@ -834,6 +851,13 @@ pub(crate) mod mock {
         }
         fn casimir(&self) -> Option<f64> {
             Some(9.0 * self.omega * self.omega)
+        }
+        fn velocity(&self) -> Vec<f64> {
+            vec![0.0, 0.0, self.omega]
+        }
+        /// R Π = Π: the rotation is about Π's own axis e₃.
+        fn spatial_momentum(&self) -> Option<Vec<f64>> {
+            self.reconstruct.then(|| self.momentum())
         }
         /// The exact uniform rotation.
         fn info(&self) -> integrators::MethodInfo {

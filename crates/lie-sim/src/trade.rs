@@ -4,27 +4,32 @@
 //! compositions [`COMPOSITIONS`] of the θ = ½ Lie–Poisson method for each τ, the Strang splitting
 //! and its compositions [`SPLITTING_COMPOSITIONS`], the kinetic–kick splittings (Strang,
 //! Blanes–Moan 4 and 6), the exact free-body flow, rk4 and rkmk4) runs the scene over a ladder of
-//! steps h₀, h₀/2, …, h₀/2^{L−1} (h₀ the scene's step; the exact flow also in one step to T); a
-//! composite step of size h is s base steps. Methods that do not apply to the system (euler-arnold
-//! with a potential, rk4 off SO(3), the exact flow off the free body, …) are left out. Each run is
-//! compared at the final time T with a reference solution: the exact flow on the free rigid body,
-//! elsewhere the order-8 composition at a step smaller than the finest of the ladder (see
-//! [`reference()`]). The table reports, per run, the cost (ns per step, total time),
-//! the error at T and the maximum relative energy error.
+//! steps ([`crate::ladder`]: from the scene's time scale, h ω = 1 halved down to the reference
+//! floor, or the `--steps` list; the exact flow also in one step to T); a composite step of size h
+//! is s base steps. Methods that do not apply to the system (euler-arnold with a potential, rk4
+//! off SO(3), the exact flow off the free body, …) are left out. Each run is compared at the final
+//! time T with a reference solution: the exact flow on the free rigid body, elsewhere the order-8
+//! composition at a step smaller than the finest of the ladder (see [`reference()`]). The table
+//! reports, per run, the cost (ns per step, total time), the error at T and the long-horizon
+//! measures of [`crate::invariants`]: the maximum relative energy, Casimir and spatial
+//! momentum-map errors over the run (`-` where they do not apply); `--metric` picks the one the
+//! plot draws against cost.
 //!
 //! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
-//! only where both runs reconstruct g. Timing covers only the steps: the energy is sampled every
-//! [`ENERGY_SAMPLE`] steps outside the timed intervals, so that the table measures the integrator,
-//! not the bookkeeping.
+//! only where both runs reconstruct g. Timing covers only the steps: the invariants are sampled
+//! every [`ENERGY_SAMPLE`] steps (and at T) outside the timed intervals, so that the table
+//! measures the integrator, not the bookkeeping, and nothing of the trajectory is stored.
 
 use crate::error::SimError;
+use crate::invariants::Monitor;
 use crate::output::write_atomic;
-use crate::plot::{plot_loglog, Curve};
-use crate::run::{relative_error, Cell};
+use crate::plot::{plot_loglog, Annotations, Curve, Marker, SeriesStyle};
+use crate::run::Cell;
 use crate::scene::{steps_for, Method, MethodSpec, Scene, System, TauKind};
 use crate::sim::{build, Simulation};
 use integrators::splitting::SplittingScheme;
 use integrators::CompositionScheme;
+use plotters::style::RGBColor;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -183,14 +188,25 @@ pub struct Timed {
     pub stepping: Duration,
     /// Maximum relative energy error over the samples.
     pub max_energy_error: f64,
+    /// Maximum relative Casimir error over the samples, where the system has a Casimir.
+    pub max_casimir_error: Option<f64>,
+    /// Maximum relative error of the conserved part of the spatial momentum map over the samples,
+    /// where g is reconstructed and the system keeps one ([`crate::invariants`]).
+    pub max_momentum_map_error: Option<f64>,
 }
 
-/// Runs `sim` to `duration` with step `h` (the last step shortened to land on T).
-pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Timed, SimError> {
+/// Runs `sim` (a simulation of `system`) to `duration` with step `h` (the last step shortened to
+/// land on T), sampling the invariants of [`crate::invariants`] every [`ENERGY_SAMPLE`] steps
+/// and at T, outside the timed intervals.
+pub fn timed_run(
+    sim: &mut dyn Simulation,
+    system: &System,
+    duration: f64,
+    h: f64,
+) -> Result<Timed, SimError> {
     let n = steps_for(duration, h);
     let h_last = duration - (n - 1) as f64 * h;
-    let e0 = sim.energy();
-    let mut max_e = 0.0f64;
+    let mut monitor = Monitor::new(sim, system);
     let mut stepping = Duration::ZERO;
     let mut k = 0u64;
     while k < n {
@@ -208,20 +224,21 @@ pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Time
             k += 1;
         }
         stepping += start.elapsed();
-        let e = sim.energy();
+        let e = monitor.sample(sim);
         if !e.is_finite() {
             return Err(SimError::NonFinite {
                 step: k - 1,
                 time: sim.time(),
             });
         }
-        max_e = max_e.max(relative_error(e, e0));
     }
     Ok(Timed {
         state: FinalState::of(sim),
         steps: n,
         stepping,
-        max_energy_error: max_e,
+        max_energy_error: monitor.energy,
+        max_casimir_error: monitor.casimir,
+        max_momentum_map_error: monitor.momentum_map,
     })
 }
 
@@ -247,7 +264,7 @@ pub struct Reference {
 pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
     let run = |m: &MethodSpec, h: f64| -> Result<FinalState, SimError> {
         let mut sim = build(&scene.system, m, scene.reconstruct, &scene.solver)?;
-        Ok(timed_run(sim.as_mut(), scene.duration, h)?.state)
+        Ok(timed_run(sim.as_mut(), &scene.system, scene.duration, h)?.state)
     };
     if matches!(scene.system, System::FreeRigidBody(_)) && scene.system.forces().is_none() {
         let m = MethodSpec::plain(Method::Exact, None);
@@ -280,22 +297,23 @@ pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
 /// The work of [`trade`] before it starts: every candidate over the ladder (a composite step
 /// counts its stages), `repeats` times, and the two reference runs (the order-8 reference's 17
 /// stages at h_min/2 and h_min; the exact flow's one step and its run at h_min). Bytes: the table.
-pub fn estimate(scene: &Scene, levels: usize, repeats: usize) -> crate::bounds::Estimate {
+pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds::Estimate {
     let per_unit_h: u128 = candidates()
         .iter()
         .map(|m| m.composition.as_ref().map_or(1, |c| c.stages()) as u128)
         .sum();
-    let base = u128::from(steps_for(scene.duration, scene.step));
-    // Σ_k T/(h₀/2ᵏ) over the ladder = (2^L − 1)·T/h₀.
-    let ladder = base.saturating_mul((1u128 << levels.min(100)) - 1);
-    let h_min = scene.step / f64::powi(2.0, levels as i32 - 1);
-    let reference = u128::from(steps_for(scene.duration, h_min)).saturating_mul(3 * 17);
+    let steps = |h: f64| u128::from(steps_for(scene.duration, h));
+    let ladder_steps: u128 = ladder.iter().map(|&h| steps(h)).sum();
+    let h_min = ladder.iter().copied().fold(f64::INFINITY, f64::min);
+    let reference = steps(h_min / REFERENCE_REFINEMENT_ORDER8)
+        .saturating_add(steps(h_min))
+        .saturating_mul(17);
     crate::bounds::Estimate {
-        steps: ladder
+        steps: ladder_steps
             .saturating_mul(per_unit_h)
             .saturating_mul(repeats as u128)
             .saturating_add(reference),
-        bytes: crate::bounds::Estimate::csv((candidates().len() * (levels + 1)) as u128, 11),
+        bytes: crate::bounds::Estimate::csv((candidates().len() * (ladder.len() + 1)) as u128, 13),
     }
 }
 
@@ -316,6 +334,12 @@ pub struct TradeRow {
     pub error: f64,
     /// Maximum relative energy error (NaN when the run failed).
     pub max_energy_error: f64,
+    /// Maximum relative Casimir error, where the system has a Casimir (`None` also when the run
+    /// failed: see `failure`).
+    pub max_casimir_error: Option<f64>,
+    /// Maximum relative error of the conserved part of the spatial momentum map, where it applies
+    /// (`None` also when the run failed).
+    pub max_momentum_map_error: Option<f64>,
     /// Why the run failed, if it did.
     pub failure: Option<String>,
 }
@@ -333,26 +357,23 @@ pub struct TradeReport {
     pub inapplicable: Vec<MethodSpec>,
 }
 
-/// Runs the trade over `levels` step sizes; each run is repeated `repeats` times from the same
+/// Runs the trade over the steps of `ladder`; each run is repeated `repeats` times from the same
 /// initial state and the fastest stepping time kept (the minimum is the least disturbed by other
 /// load on the machine; the numbers themselves are identical between repeats). `on_row` sees each
 /// row as soon as it is measured.
 pub fn trade(
     scene: &Scene,
-    levels: usize,
+    ladder: &[f64],
     repeats: usize,
     mut on_row: impl FnMut(&TradeRow),
 ) -> Result<TradeReport, SimError> {
-    let ladder: Vec<f64> = (0..levels)
-        .map(|k| scene.step / f64::powi(2.0, k as i32))
-        .collect();
-    let h_min = ladder.last().copied().unwrap_or(scene.step);
+    let h_min = ladder.iter().copied().fold(scene.duration, f64::min);
     let reference = reference(scene, h_min)?;
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     let mut inapplicable = Vec::new();
     for m in candidates() {
-        for h in steps_of(&m, &ladder, scene.duration) {
+        for h in steps_of(&m, ladder, scene.duration) {
             let mut best: Option<Result<Timed, SimError>> = None;
             for _ in 0..repeats.max(1) {
                 let mut sim = match build(&scene.system, &m, scene.reconstruct, &scene.solver) {
@@ -364,7 +385,7 @@ pub fn trade(
                     }
                     Err(e) => return Err(e),
                 };
-                let t = timed_run(sim.as_mut(), scene.duration, h);
+                let t = timed_run(sim.as_mut(), &scene.system, scene.duration, h);
                 best = Some(match (best, t) {
                     (Some(Ok(b)), Ok(t)) if b.stepping <= t.stepping => Ok(b),
                     (_, t) => t,
@@ -388,6 +409,8 @@ pub fn trade(
                     seconds: t.stepping.as_secs_f64(),
                     error: t.state.error(&reference.state),
                     max_energy_error: t.max_energy_error,
+                    max_casimir_error: t.max_casimir_error,
+                    max_momentum_map_error: t.max_momentum_map_error,
                     failure: None,
                 },
                 Err(e) => TradeRow {
@@ -398,6 +421,8 @@ pub fn trade(
                     seconds: f64::NAN,
                     error: f64::NAN,
                     max_energy_error: f64::NAN,
+                    max_casimir_error: None,
+                    max_momentum_map_error: None,
                     failure: Some(e.to_string()),
                 },
             };
@@ -440,8 +465,18 @@ pub fn fitted_order(rows: &[&TradeRow], reference_error: f64) -> Option<f64> {
 /// Table header, fixed width.
 pub fn table_header() -> String {
     format!(
-        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11}",
-        "method", "tau", "theta", "composition", "h", "steps", "ns/step", "error(T)", "max|dE/E|"
+        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11} {:>11}",
+        "method",
+        "tau",
+        "theta",
+        "composition",
+        "h",
+        "steps",
+        "ns/step",
+        "error(T)",
+        "max|dE/E|",
+        "max|dC/C|",
+        "max|dJ|/|J|"
     )
 }
 
@@ -458,21 +493,33 @@ pub fn table_line(r: &TradeRow) -> String {
     match &r.failure {
         Some(f) => format!("{head} failed: {f}"),
         None => format!(
-            "{head} {:>10} {:>11.1} {:>11.3e} {:>11.3e}",
-            r.steps, r.ns_per_step, r.error, r.max_energy_error
+            "{head} {:>10} {:>11.1} {:>11.3e} {:>11.3e} {:>11} {:>11}",
+            r.steps,
+            r.ns_per_step,
+            r.error,
+            r.max_energy_error,
+            optional(r.max_casimir_error),
+            optional(r.max_momentum_map_error)
         ),
     }
 }
 
-/// The rows as CSV.
+/// A table cell for a measure that may not apply: `-` where it does not.
+fn optional(x: Option<f64>) -> String {
+    x.map_or_else(|| "-".into(), |v| format!("{v:.3e}"))
+}
+
+/// The rows as CSV; a measure that does not apply (or of a failed run) is an empty cell.
 pub fn to_csv(rows: &[TradeRow]) -> String {
     let mut s = String::from(
-        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,failure\n",
+        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,\
+         max_casimir_error,max_momentum_map_error,failure\n",
     );
+    let cell = |x: Option<f64>| x.map_or_else(String::new, |v| Cell(v).to_string());
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.method.method_label(),
             r.method.tau_label(),
             r.method.theta_label(),
@@ -483,10 +530,120 @@ pub fn to_csv(rows: &[TradeRow]) -> String {
             Cell(r.seconds),
             Cell(r.error),
             Cell(r.max_energy_error),
+            cell(r.max_casimir_error),
+            cell(r.max_momentum_map_error),
             r.failure.as_deref().unwrap_or("").replace(',', ";")
         );
     }
     s
+}
+
+/// What the plot draws against cost (every one is in the table and the CSV).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Metric {
+    /// The error at T against the reference.
+    Error,
+    /// The maximum relative energy error over the run.
+    Energy,
+    /// The maximum relative Casimir error over the run.
+    Casimir,
+    /// The maximum relative error of the conserved part of the spatial momentum map over the run.
+    MomentumMap,
+}
+
+impl Metric {
+    /// The value of the metric for a row (`None` where it does not apply).
+    pub fn of(self, r: &TradeRow) -> Option<f64> {
+        match self {
+            Self::Error => Some(r.error),
+            Self::Energy => Some(r.max_energy_error),
+            Self::Casimir => r.max_casimir_error,
+            Self::MomentumMap => r.max_momentum_map_error,
+        }
+    }
+
+    /// The axis label.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::Error => "error at T",
+            Self::Energy => "max relative energy error |E − E₀|/|E₀|",
+            Self::Casimir => "max relative Casimir error |C − C₀|/|C₀|",
+            Self::MomentumMap => "max relative momentum-map error |J − J₀|/|J₀|",
+        }
+    }
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Error => "error",
+            Self::Energy => "energy",
+            Self::Casimir => "casimir",
+            Self::MomentumMap => "momentum-map",
+        }
+    }
+}
+
+/// Refuses a metric the scene does not have: a Casimir where its system monitors none, the
+/// momentum map without reconstruction or where the system keeps no part of it
+/// ([`crate::invariants::conserved_momentum_map`]).
+pub fn check_metric(scene: &Scene, metric: Metric) -> Result<(), SimError> {
+    let why = match metric {
+        Metric::Error | Metric::Energy => None,
+        Metric::Casimir => {
+            let sim = build(
+                &scene.system,
+                &scene.method,
+                scene.reconstruct,
+                &scene.solver,
+            )?;
+            sim.casimir()
+                .is_none()
+                .then(|| format!("{} monitors no Casimir", scene.system.kind()))
+        }
+        Metric::MomentumMap => {
+            if crate::invariants::conserved_momentum_map(&scene.system).is_none() {
+                Some(format!(
+                    "this {} keeps no part of the spatial momentum map (a potential or forces \
+                     break its symmetry)",
+                    scene.system.kind()
+                ))
+            } else if !scene.reconstruct {
+                Some("the scene does not reconstruct g (reconstruct = false)".into())
+            } else {
+                None
+            }
+        }
+    };
+    match why {
+        Some(message) => Err(SimError::Usage {
+            flag: format!("--metric {}", metric.name()),
+            message,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Drops the finest steps of a ladder the rule alone chose (down to 2) while the trade's
+/// [`estimate`] is beyond the work limits, unless `allow_large`; returns how many were dropped. A
+/// ladder given by `--steps` or `--levels` is left as given (the limit check then refuses it).
+pub fn fit_to_limits(
+    scene: &Scene,
+    ladder: &mut crate::ladder::Ladder,
+    repeats: usize,
+    allow_large: bool,
+) -> usize {
+    let mut dropped = 0;
+    while ladder.may_trim
+        && !allow_large
+        && ladder.steps.len() > 2
+        && estimate(scene, &ladder.steps, repeats)
+            .check("trade", false)
+            .is_err()
+    {
+        ladder.steps.pop();
+        dropped += 1;
+    }
+    dropped
 }
 
 /// Groups rows by method, in first-seen order.
@@ -501,44 +658,158 @@ pub fn by_method(rows: &[TradeRow]) -> Vec<(MethodSpec, Vec<&TradeRow>)> {
     groups
 }
 
-/// Writes the table as CSV to `csv` and the error-against-cost plot to `svg`.
+/// The colour of a method's family in the plot: Lie–Poisson, Euler–Poincaré, Euler–Arnold, the
+/// compositions (of Lie–Poisson), the splittings (Strang, its compositions, kinetic–kick), the
+/// exact flow, the Runge–Kutta baselines (rk4, rkmk4) and the modified Lie–Poisson method.
+pub fn family(m: &MethodSpec) -> (&'static str, RGBColor) {
+    match m.method {
+        Method::LiePoisson if m.modified => ("modified", RGBColor(227, 119, 194)),
+        Method::LiePoisson if m.composition.is_some() => ("compositions", RGBColor(44, 160, 44)),
+        Method::LiePoisson => ("lie-poisson", RGBColor(31, 119, 180)),
+        Method::EulerPoincare => ("euler-poincare", RGBColor(255, 127, 14)),
+        Method::EulerArnold => ("euler-arnold", RGBColor(140, 86, 75)),
+        Method::Splitting | Method::KineticKick => ("splitting", RGBColor(148, 103, 189)),
+        Method::Exact => ("exact", RGBColor(0, 0, 0)),
+        Method::Rk4 | Method::Rkmk4 => ("rk4/rkmk4", RGBColor(214, 39, 40)),
+    }
+}
+
+/// How a method's series is drawn: the colour of its [`family`]; τ = cayley (and the second
+/// member of a pair without τ: kinetic–kick beside splitting, rkmk4 beside rk4) dashed with
+/// hollow markers, τ = exp solid with filled ones; the marker by θ (0 ▲, ½ ●, 1 ■) or by
+/// scheme (order-4 triple jump ▲, McLachlan's ×, order 6 ■, order 8 ◆; the kinetic–kick
+/// schemes ●, ▲, ■ by order; the exact flow ◆).
+pub fn style_of(m: &MethodSpec) -> SeriesStyle {
+    let second =
+        m.tau == Some(TauKind::Cayley) || matches!(m.method, Method::KineticKick | Method::Rkmk4);
+    let marker = if let Some(c) = &m.composition {
+        match c.name() {
+            "triple-jump-4" => Marker::Triangle,
+            "mclachlan-4" => Marker::Cross,
+            "kahan-li-6" => Marker::Square,
+            _ => Marker::Diamond,
+        }
+    } else if let Some(s) = &m.splitting {
+        match s.order() {
+            2 => Marker::Circle,
+            4 => Marker::Triangle,
+            _ => Marker::Square,
+        }
+    } else if m.method == Method::Exact {
+        Marker::Diamond
+    } else {
+        match m.theta {
+            Some(0.0) => Marker::Triangle,
+            Some(1.0) => Marker::Square,
+            _ => Marker::Circle,
+        }
+    };
+    SeriesStyle {
+        color: family(m).1,
+        dashed: second,
+        marker,
+        filled: !second,
+    }
+}
+
+/// The cheapest run (least stepping time) meeting each decade target 10⁻¹, 10⁻², … of `metric`,
+/// loosest target first, down to the smallest value measured and, for the error at T, no lower
+/// than `floor` (the reference's estimated error: below it nothing is resolved). A run cheapest
+/// for several consecutive targets is listed once, at the tightest.
+pub fn cheapest_per_target(rows: &[TradeRow], metric: Metric, floor: f64) -> Vec<(f64, &TradeRow)> {
+    let measured: Vec<(f64, &TradeRow)> = rows
+        .iter()
+        .filter(|r| r.failure.is_none() && r.seconds.is_finite())
+        .filter_map(|r| Some((metric.of(r)?, r)))
+        .filter(|(v, _)| v.is_finite())
+        .collect();
+    let lowest = measured
+        .iter()
+        .map(|(v, _)| *v)
+        .fold(f64::INFINITY, f64::min);
+    let mut out: Vec<(f64, &TradeRow)> = Vec::new();
+    for k in 1..=16 {
+        let target = 10f64.powi(-k);
+        if (metric == Metric::Error && target < floor) || target < lowest {
+            break;
+        }
+        let Some(&(_, best)) = measured
+            .iter()
+            .filter(|(v, _)| *v <= target)
+            .min_by(|a, b| a.1.seconds.total_cmp(&b.1.seconds))
+        else {
+            continue;
+        };
+        match out.last_mut() {
+            Some(last) if std::ptr::eq(last.1, best) => last.0 = target,
+            _ => out.push((target, best)),
+        }
+    }
+    out
+}
+
+/// Writes the table as CSV to `csv` and the plot of `metric` against cost to `svg`: one series
+/// per method ([`style_of`]), the reference's estimated error as a dashed line (error at T), and
+/// the [`cheapest_per_target`] runs ringed and labelled.
 pub fn write_outputs(
     report: &TradeReport,
     scene: &Scene,
     csv: &Path,
     svg: &Path,
+    metric: Metric,
 ) -> Result<(), SimError> {
     write_atomic(csv, &to_csv(&report.rows))?;
     let curves: Vec<Curve> = by_method(&report.rows)
         .into_iter()
         .map(|(m, rows)| Curve {
-            label: format!(
-                "{}{} {}{}",
-                m.composition
-                    .as_ref()
-                    .map_or(String::new(), |c| format!("{} ∘ ", c.name())),
-                m.method.name(),
-                m.tau.map_or(String::new(), |t| t.name().to_string()),
-                m.theta.map_or(String::new(), |t| format!(" θ={t}"))
-            ),
+            label: m.to_string(),
+            style: style_of(&m),
             points: rows
                 .iter()
                 .filter(|r| r.failure.is_none())
-                .map(|r| (r.seconds, r.error))
+                .filter_map(|r| Some((r.seconds, metric.of(r)?)))
                 .collect(),
         })
         .collect();
+    let floor = report.reference.estimated_error;
+    let annotations = Annotations {
+        hline: (metric == Metric::Error).then(|| {
+            (
+                floor,
+                format!("reference floor: its estimated error {floor:.1e}"),
+            )
+        }),
+        labels: cheapest_per_target(&report.rows, metric, floor)
+            .into_iter()
+            .filter_map(|(target, r)| {
+                let value = metric.of(r)?;
+                // An error below the reference's floor is not resolved: labelled on the floor.
+                let y = if metric == Metric::Error {
+                    value.max(floor)
+                } else {
+                    value
+                };
+                Some((
+                    r.seconds,
+                    y,
+                    format!("≤ {target:.0e}: {} h = {:.3e}", r.method, r.h),
+                ))
+            })
+            .collect(),
+    };
     plot_loglog(
         &curves,
+        &annotations,
         svg,
         &format!(
-            "{} ({}), T = {}: error at T against cost",
+            "{} ({}), T = {}: {} against cost",
             scene.name,
             scene.system.kind(),
-            scene.duration
+            scene.duration,
+            metric.name()
         ),
         "cost: stepping time (s)",
-        "error at T",
+        metric.describe(),
     )
 }
 
@@ -555,6 +826,8 @@ mod tests {
             seconds: 1.0,
             error,
             max_energy_error: 0.0,
+            max_casimir_error: None,
+            max_momentum_map_error: None,
             failure: None,
         }
     }
@@ -605,6 +878,69 @@ mod tests {
             .map(|m| m.splitting.unwrap().order())
             .collect();
         assert_eq!(kicks, [2, 4, 6]);
+    }
+
+    #[test]
+    fn a_ladder_the_rule_chose_is_cut_to_the_work_limit_and_a_given_one_is_not() {
+        let mut scene = Scene::default_scene(Default::default()).unwrap();
+        scene.duration = 1e5;
+        // ωT = 1e5: (1e-18)^{1/8} = 2^{-7.5}, nine levels, 2.6e7 steps per run at the finest.
+        let mut ladder = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None);
+        assert_eq!(ladder.steps.len(), 9);
+        assert!(estimate(&scene, &ladder.steps, 3)
+            .check("t", false)
+            .is_err());
+        let dropped = fit_to_limits(&scene, &mut ladder, 3, false);
+        assert!(dropped > 0 && ladder.steps.len() >= 2, "{ladder:?}");
+        assert!(estimate(&scene, &ladder.steps, 3).check("t", false).is_ok());
+        // One level more is over the limit: only what had to go was dropped.
+        let mut one_more = ladder.steps.clone();
+        one_more.push(ladder.steps[ladder.steps.len() - 1] / 2.0);
+        assert!(estimate(&scene, &one_more, 3).check("t", false).is_err());
+        let mut given = crate::ladder::automatic_for(1.0, scene.duration, 0.1, Some(10));
+        assert_eq!(fit_to_limits(&scene, &mut given, 3, false), 0);
+        let mut allowed = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None);
+        assert_eq!(fit_to_limits(&scene, &mut allowed, 3, true), 0);
+    }
+
+    #[test]
+    fn every_candidate_is_drawn_in_its_own_style_and_families_share_a_colour() {
+        let styles: Vec<SeriesStyle> = candidates().iter().map(style_of).collect();
+        for (i, a) in styles.iter().enumerate() {
+            for b in &styles[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
+        let families: Vec<&str> = candidates().iter().map(|m| family(m).0).collect();
+        let mut distinct = families.clone();
+        distinct.sort();
+        distinct.dedup();
+        assert_eq!(distinct.len(), 8);
+        for (m, f) in candidates().iter().zip(&families) {
+            for (n, g) in candidates().iter().zip(&families) {
+                assert_eq!(f == g, family(m).1 == family(n).1, "{m} {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn cheapest_per_target_takes_the_least_time_meeting_each_decade_once() {
+        let mut rows = Vec::new();
+        // (seconds, error): a cheap coarse run at 5e-3, a dearer one at 2e-5, the dearest 1e-9.
+        for (s, e) in [(1.0, 5e-3), (2.0, 2e-5), (8.0, 1e-9), (9.0, 3e-3)] {
+            let mut r = row(0.1, e);
+            r.seconds = s;
+            rows.push(r);
+        }
+        let picks: Vec<(f64, f64)> = cheapest_per_target(&rows, Metric::Error, 1e-12)
+            .iter()
+            .map(|(t, r)| (*t, r.seconds))
+            .collect();
+        // 1e-1, 1e-2: the 1 s run (listed at 1e-2); 1e-3 … 1e-4: the 2 s run; 1e-5 … 1e-9: 8 s.
+        assert_eq!(picks, [(1e-2, 1.0), (1e-4, 2.0), (1e-9, 8.0)]);
+        // The reference's floor stops the targets: below 1e-6 nothing is resolved.
+        let picks = cheapest_per_target(&rows, Metric::Error, 1e-6);
+        assert_eq!(picks.last().map(|p| (p.0, p.1.seconds)), Some((1e-6, 8.0)));
     }
 
     #[test]

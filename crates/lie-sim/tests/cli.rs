@@ -285,12 +285,10 @@ fn trade_writes_a_work_precision_table_and_plot() {
             "trade",
             "--out",
             "w.csv",
-            "--levels",
-            "2",
+            "--steps",
+            "0.05,0.025",
             "--repeats",
             "1",
-            "--step",
-            "0.05",
             "--duration",
             "0.2",
         ],
@@ -301,7 +299,8 @@ fn trade_writes_a_work_precision_table_and_plot() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,failure"
+        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,\
+         max_casimir_error,max_momentum_map_error,failure"
     );
     // (lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, 3 compositions × 2 τ, modified
     // lie-poisson × 2 τ, splitting and its 3 compositions, kinetic-kick × 3 coefficient sets, rk4,

@@ -336,9 +336,23 @@ fn work_beyond_the_limits_is_refused_up_front() {
             "--out",
             "t.csv",
             "--duration",
-            "1e3",
+            "1e5",
             "--levels",
             "12",
+        ],
+        &["trade", "integrator steps"],
+    );
+    assert_refused(
+        &dir,
+        &[
+            "trade",
+            "s.toml",
+            "--out",
+            "t.csv",
+            "--duration",
+            "1e3",
+            "--steps",
+            "1e-5",
         ],
         &["trade", "integrator steps"],
     );

@@ -1,0 +1,255 @@
+//! The steps a trade runs: chosen from the scene's time scale, or given with `--steps`.
+//!
+//! **Automatic ladder.** A characteristic rate ω of the scene ([`characteristic_rate`]): the
+//! largest of the initial body angular velocity |ξ₀| (|Ω₀| = |𝕀⁻¹Π₀| for the rigid body) and the
+//! frequencies of the potential (the heavy top's pendulum, the satellite's orbit, the planar
+//! body's spring). The ladder starts at h₀ = 1/ω (h₀ω = 1, near the stability edge of the explicit
+//! methods and where every method's error is of order one; h₀ ≤ T) and halves down to the step
+//! where the highest-order candidate (order [`HIGHEST_ORDER`]) is predicted to reach the reference
+//! floor over the horizon, `(hω)^p · max(1, ωT) = `[`REFERENCE_FLOOR`] — finer steps only measure
+//! the lower-order methods at a higher cost — with at least 2 and at most [`MAX_AUTO_LEVELS`]
+//! levels (`--levels` fixes the count instead; without it, the finest levels are dropped, down to
+//! two, when the trade would exceed the work limits of [`crate::bounds`]). A scene at rest (ω = 0) has no time scale of its
+//! own: its ladder starts at the scene's step h instead.
+//!
+//! **Explicit ladder.** `--steps 0.1,0.05,0.02`: exactly these steps, in this order; each finite,
+//! positive and at most T.
+
+use crate::error::SimError;
+use crate::scene::{Scene, System};
+use crate::sim::build;
+
+/// The error level the automatic ladder aims its finest step at: the free-body reference (the
+/// exact flow) is good to ~1e-14, a refined reference to its tolerance, ~1e-13.
+pub const REFERENCE_FLOOR: f64 = 1e-13;
+
+/// The highest order among the trade's candidates (Kahan–Li's order-8 composition).
+pub const HIGHEST_ORDER: i32 = 8;
+
+/// The most levels the automatic ladder takes.
+pub const MAX_AUTO_LEVELS: usize = 10;
+
+/// The value of `--steps`, parsed by [`parse_steps`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepList(pub Vec<f64>);
+
+/// The steps of a trade and the rule that chose them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ladder {
+    /// The steps, coarsest first for the automatic ladder, as given for `--steps`.
+    pub steps: Vec<f64>,
+    /// One line saying how they were chosen.
+    pub rule: String,
+    /// Whether the rule alone chose them (no `--steps`, no `--levels`), so that the finest may be
+    /// dropped to stay within the work limits.
+    pub may_trim: bool,
+}
+
+/// The Euclidean norm of the components `parts` of `v`.
+fn norm(v: &[f64], parts: std::ops::Range<usize>) -> f64 {
+    v[parts].iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// ω of the module page, from the system and its initial body velocity ξ₀ (in the basis of μ):
+///
+/// - SO(3), SO(n): |ξ₀| (the Euclidean norm of its coordinates, which bounds the largest rate of
+///   rotation);
+/// - SE(3), SE(2): the angular part of ξ₀ (a linear velocity is not a rate without a length);
+/// - heavy top: also the pendulum frequency `√(m g |χ| / λ_min(𝕀))`;
+/// - satellite: also the orbital rate at the initial radius, `√(GM / |x₀|³)`;
+/// - planar body on a spring: also `√(k/m)` and `√(k|c|²/I)`.
+pub fn characteristic_rate(system: &System, xi0: &[f64]) -> f64 {
+    match system {
+        System::FreeRigidBody(_) | System::GeodesicSoN(_) => norm(xi0, 0..xi0.len()),
+        System::HeavyTop(p) => {
+            let lambda_min = p.inertia.symmetric_eigenvalues().min();
+            let pendulum = (p.mass * p.gravity * p.center_of_mass.norm() / lambda_min).sqrt();
+            norm(xi0, 0..3).max(pendulum)
+        }
+        System::RigidBodySe3(p) => {
+            let orbit = if p.gravitational_parameter > 0.0 {
+                (p.gravitational_parameter / p.position.norm().powi(3)).sqrt()
+            } else {
+                0.0
+            };
+            norm(xi0, 0..3).max(orbit)
+        }
+        System::PlanarBodySe2(p) => {
+            let spring = (p.stiffness / p.mass)
+                .sqrt()
+                .max((p.stiffness * p.attachment.norm_squared() / p.inertia).sqrt());
+            xi0[0].abs().max(spring)
+        }
+    }
+}
+
+/// The automatic ladder of the module page for `scene`; `levels` replaces the computed count.
+/// ξ₀ is the scene's own integrator's initial velocity.
+pub fn automatic(scene: &Scene, levels: Option<usize>) -> Result<Ladder, SimError> {
+    let sim = build(
+        &scene.system,
+        &scene.method,
+        scene.reconstruct,
+        &scene.solver,
+    )?;
+    let omega = characteristic_rate(&scene.system, &sim.velocity());
+    Ok(automatic_for(omega, scene.duration, scene.step, levels))
+}
+
+/// The ladder for rate ω over horizon T (`step`: the scene's, used when ω = 0).
+pub fn automatic_for(omega: f64, duration: f64, step: f64, levels: Option<usize>) -> Ladder {
+    let resting = !(omega.is_finite() && omega > 0.0);
+    let top = if resting { step } else { 1.0 / omega }.min(duration);
+    let count = levels.unwrap_or_else(|| {
+        if resting {
+            return 2;
+        }
+        // (hω)^p max(1, ωT) = floor at h_floor; levels cover h₀ … ≤ h_floor.
+        let h_floor = (REFERENCE_FLOOR / (omega * duration).max(1.0))
+            .powf(1.0 / f64::from(HIGHEST_ORDER))
+            / omega;
+        let halvings = (top / h_floor).log2().ceil().max(0.0) as usize;
+        (halvings + 1).clamp(2, MAX_AUTO_LEVELS)
+    });
+    let steps: Vec<f64> = (0..count).map(|k| top / f64::powi(2.0, k as i32)).collect();
+    let rule = if resting {
+        format!(
+            "the scene is at rest (ω = 0): h = {step:e} … h/2^{} from its step",
+            count - 1
+        )
+    } else {
+        format!(
+            "ω = {omega:.4e} rad/s: h = {:.4e} (hω = {:.2}) halved {} times{}",
+            top,
+            top * omega,
+            count - 1,
+            if levels.is_some() {
+                " (--levels)"
+            } else {
+                " (down to the highest order at the reference floor, at most 10 levels)"
+            }
+        )
+    };
+    Ladder {
+        steps,
+        rule,
+        may_trim: levels.is_none(),
+    }
+}
+
+/// Parses `--steps`: a comma-separated list of finite positive steps (T is checked by
+/// [`explicit`]).
+pub fn parse_steps(text: &str) -> Result<Vec<f64>, String> {
+    let items: Vec<&str> = text.split(',').map(str::trim).collect();
+    if items.iter().all(|s| s.is_empty()) {
+        return Err("the step list is empty (e.g. --steps 0.1,0.05,0.02)".into());
+    }
+    items
+        .iter()
+        .map(|s| {
+            let h: f64 = s
+                .parse()
+                .map_err(|_| format!("{s:?} is not a number (e.g. --steps 0.1,0.05,0.02)"))?;
+            if h.is_finite() && h > 0.0 {
+                Ok(h)
+            } else {
+                Err(format!("every step must be finite and positive, got {s}"))
+            }
+        })
+        .collect()
+}
+
+/// The explicit ladder `steps`, each at most T.
+pub fn explicit(steps: Vec<f64>, duration: f64) -> Result<Ladder, SimError> {
+    if let Some(h) = steps.iter().find(|&&h| h > duration) {
+        return Err(SimError::Usage {
+            flag: "--steps".into(),
+            message: format!("the step {h} is longer than the horizon T = {duration}"),
+        });
+    }
+    Ok(Ladder {
+        rule: format!("--steps ({} steps)", steps.len()),
+        steps,
+        may_trim: false,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ladder_starts_at_h_omega_one_and_stops_where_order_8_meets_the_floor() {
+        // ω = 1, T = 10: h_floor = (1e-14)^{1/8} = 10^{-1.75} = 0.0178, 1/0.0178 = 2^5.81: six
+        // halvings, seven levels.
+        let l = automatic_for(1.0, 10.0, 0.1, None);
+        assert_eq!(l.steps.len(), 7);
+        assert_eq!(l.steps[0], 1.0);
+        assert_eq!(l.steps[6], 1.0 / 64.0);
+        // Ten times faster: ten times smaller steps, and h_floor·ω = (1e-15)^{1/8} one level more.
+        let fast = automatic_for(10.0, 10.0, 0.1, None);
+        assert_eq!(fast.steps[0], 0.1);
+        assert_eq!(fast.steps.len(), 8);
+        // Capped at T, at MAX_AUTO_LEVELS, and fixed by --levels.
+        assert_eq!(automatic_for(0.01, 10.0, 0.1, None).steps[0], 10.0);
+        assert_eq!(
+            automatic_for(1.0, 1e30, 0.1, None).steps.len(),
+            MAX_AUTO_LEVELS
+        );
+        assert_eq!(
+            automatic_for(1.0, 10.0, 0.1, Some(3)).steps,
+            [1.0, 0.5, 0.25]
+        );
+        // At rest: the scene's step.
+        assert_eq!(automatic_for(0.0, 10.0, 0.1, None).steps, [0.1, 0.05]);
+    }
+
+    #[test]
+    fn step_lists_parse_or_say_why_not() {
+        assert_eq!(parse_steps("0.1, 0.05,2e-2").unwrap(), [0.1, 0.05, 0.02]);
+        for bad in ["", " , ", "0.1,,0.05", "0.1,-1", "0", "NaN", "inf", "a"] {
+            assert!(parse_steps(bad).is_err(), "{bad:?}");
+        }
+        assert!(explicit(vec![0.1, 2.0], 1.0).is_err());
+        assert_eq!(explicit(vec![1.0, 0.5], 1.0).unwrap().steps, [1.0, 0.5]);
+    }
+
+    #[test]
+    fn the_rate_is_the_body_velocity_or_the_potential_frequency() {
+        let scene = |text: &str| Scene::parse(text, "s", "s", Default::default()).unwrap();
+        let top = scene(
+            r#"
+[system]
+kind = "heavy-top"
+inertia = [2.0, 4.0, 5.0]
+mass = 2.0
+center_of_mass = [0.0, 0.0, 0.5]
+gravity = 4.0
+[initial]
+momentum = [0.0, 0.0, 0.1]
+[integrator]
+method = "rk4"
+step = 0.1
+duration = 1.0
+"#,
+        );
+        // √(2·4·0.5/2) = √2 > |Ω₀| = 0.02.
+        let l = automatic(&top, Some(2)).unwrap();
+        assert!((l.steps[0] - 0.5f64.sqrt()).abs() < 1e-15, "{l:?}");
+        let body = scene(
+            r#"
+[system]
+kind = "free-rigid-body"
+inertia = [2.0, 4.0, 5.0]
+[initial]
+momentum = [6.0, 0.0, -20.0]
+[integrator]
+method = "rk4"
+step = 0.1
+duration = 10.0
+"#,
+        );
+        // |Ω₀| = |(3, 0, −4)| = 5.
+        assert_eq!(automatic(&body, Some(2)).unwrap().steps[0], 0.2);
+    }
+}
