@@ -285,6 +285,10 @@ fn check_power_factorwise<G: CayleyGroup, const N: usize>(
     let inc = Power::<G, N>::exp_coadjoint_increment(xi, mu);
     let dual = Power::<G, N>::dexp_left_dual_apply(xi, mu);
     let cdual = Power::<G, N>::dcay_left_dual_apply(xi, mu);
+    let coad = p.coadjoint_apply(mu);
+    let adj = p.adjoint_apply(mu);
+    let br = Power::<G, N>::bracket(xi, mu);
+    let addual = Power::<G, N>::ad_dual_apply(xi, mu);
     for k in 0..N {
         let (a, m) = (&xi.parts[k], &mu.parts[k]);
         let g = G::exp(a);
@@ -314,6 +318,15 @@ fn check_power_factorwise<G: CayleyGroup, const N: usize>(
                 .norm_max(),
             tol,
         );
+        let vector_maps = [
+            ("Ad*_g μ, copy k", &coad, g.coadjoint_apply(m)),
+            ("Ad_g ξ, copy k", &adj, g.adjoint_apply(m)),
+            ("[ξ, η], copy k", &br, G::bracket(a, m)),
+            ("ad*_ξ μ, copy k", &addual, G::ad_dual_apply(a, m)),
+        ];
+        for (what, v, want) in vector_maps {
+            assert_small(what, v.parts[k].sub(&want).norm_max(), tol);
+        }
     }
     let blocks = |f: &dyn Fn(usize) -> Mat<f64>| (0..N).map(f).collect::<Vec<_>>();
     assert_block_diagonal(
