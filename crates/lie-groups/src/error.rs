@@ -188,6 +188,13 @@ pub enum StructureCheck {
     /// `G ⋉ 𝔤*` from a matrix: the middle block is not `Ad_g`.
     #[error("T*G from_matrix: middle block is not Ad_g")]
     CotangentAdjointBlock,
+    /// ℝⁿ from its affine matrix `[[I, x], [0, 1]]`: the top-left block is not the identity.
+    #[error("ℝⁿ from_matrix: top-left block is not I")]
+    TranslationLinearBlock,
+    /// A direct product from its block-diagonal matrix `diag(g, h)`: an off-diagonal block is
+    /// not 0.
+    #[error("product from_matrix: off-diagonal blocks are not 0")]
+    ProductOffDiagonal,
 }
 
 #[cfg(test)]

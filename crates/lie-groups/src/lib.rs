@@ -1,8 +1,44 @@
 //! # lie-groups
 //!
 //! Lie groups for structure-preserving integration: SO(2), SO(3), SE(2), SE(3) on nalgebra stack
-//! types, SO(n) and GL(n) of any size on faer, and the τ maps (exp, Cayley) of §3.1 of the paper
-//! *Numerical Integrators for Mechanical Systems on Lie Groups*.
+//! types, SO(n) and GL(n) of any size on faer, composite configuration spaces (ℝⁿ, direct
+//! products, powers), and the τ maps (exp, Cayley) of §3.1 of the paper *Numerical Integrators for
+//! Mechanical Systems on Lie Groups*.
+//!
+//! ## Composite configuration spaces
+//! - [`Rn<N>`](Rn): ℝᴺ under vector addition; `exp ξ = ξ`, `Ad = I`, `ad = 0`, matrix
+//!   `[[I, x], [0, 1]]` (stack vectors and operators).
+//! - [`Product<G, H>`](Product): the direct product G × H, element `(g, h)`, algebra coordinates
+//!   concatenated G first ([`ProductAlgebra`]), every map factor by factor, operators and matrix
+//!   block diagonal. A [`CayleyGroup`] when both factors are.
+//! - [`Power<G, N>`](Power): Gᴺ, N copies of G ([`PowerAlgebra`]), as `Product` iterated.
+//!
+//! They implement [`LieGroup`] (and [`CayleyGroup`]), so bundles, discretization maps and
+//! integrators run on them unchanged: a rigid body and a particle form one system on SO(3) × ℝ³,
+//! N bodies one system on SO(3)ᴺ. The algebra vectors are on the stack for stack factors;
+//! operators and matrices of products and powers are faer `Mat`s (see [`product`] for why).
+//!
+//! ```
+//! use lie_groups::{LieGroup, Power, PowerAlgebra, Product, ProductAlgebra, Rn, So3};
+//! use nalgebra::Vector3;
+//!
+//! // SO(3) × ℝ³: an attitude and a position, moved by one algebra element (ω, v)
+//! type Body = Product<So3, Rn<3>>;
+//! let xi = ProductAlgebra::<So3, Rn<3>>::new(Vector3::new(0.1, 0.2, 0.3), Vector3::new(1.0, 0.0, 2.0));
+//! let g = Body::exp(&xi);
+//! assert!((g.h.vector() - Vector3::new(1.0, 0.0, 2.0)).norm() == 0.0); // exp on ℝ³ is the identity
+//! assert!(g.g.matrix_distance(&So3::exp(&xi.a)) == 0.0); // and SO(3)'s own exp on the first factor
+//! assert!((g.log().unwrap().a - xi.a).norm() < 1e-15);
+//! // Ad is block diagonal: Ad_(R, x) = diag(R, I)
+//! let ad = g.adjoint();
+//! assert!((ad[(0, 0)] - g.g.matrix()[(0, 0)]).abs() < 1e-15 && ad[(0, 3)] == 0.0 && ad[(3, 3)] == 1.0);
+//!
+//! // SO(3)³: three attitudes, the bracket copy by copy
+//! let a = PowerAlgebra::<So3, 3>::new([Vector3::x(), Vector3::y(), Vector3::z()]);
+//! let b = PowerAlgebra::<So3, 3>::new([Vector3::y(), Vector3::z(), Vector3::x()]);
+//! let c = Power::<So3, 3>::bracket(&a, &b);
+//! assert_eq!(c.parts, [Vector3::z(), Vector3::x(), Vector3::y()]);
+//! ```
 //!
 //! ## Conventions
 //! - 𝔤 ≅ ℝⁿ by `hat`/`vee` in a fixed basis; 𝔤* ≅ ℝⁿ by the Euclidean pairing ⟨μ, ξ⟩ = μ·ξ.
@@ -41,6 +77,9 @@ mod group;
 pub mod matrix;
 pub mod matrix_path;
 mod operator;
+pub mod power;
+pub mod product;
+pub mod rn;
 pub mod se2;
 pub mod se3;
 pub mod so2;
@@ -56,6 +95,9 @@ pub use error::{DomainReason, LieError, StructureCheck};
 pub use group::{nan_operator, Action, LieGroup};
 pub use matrix::{GlN, SoN};
 pub use operator::{DenseMatrix, Operator};
+pub use power::{Power, PowerAlgebra};
+pub use product::{Product, ProductAlgebra};
+pub use rn::Rn;
 pub use se2::Se2;
 pub use se3::Se3;
 pub use so2::So2;
