@@ -794,14 +794,14 @@ impl<I: Integrator> Simulation for Adapter<I> {
         self.integrator.casimir()
     }
     fn velocity(&self) -> Vec<f64> {
-        self.0.velocity().to_vec()
+        self.integrator.velocity().to_vec()
     }
     fn spatial_momentum(&self) -> Option<Vec<f64>> {
         // Ad*_{g⁻¹} μ = (Ad_{g⁻¹})ᵀ μ: `coadjoint_apply` is the dual map of Ad, so it is applied
         // to g⁻¹ (on SO(3), Ad_{R⁻¹} = Rᵀ and J = R Π).
-        self.0
+        self.integrator
             .configuration()
-            .map(|g| g.inverse().coadjoint_apply(&self.0.momentum()).to_vec())
+            .map(|g| g.inverse().coadjoint_apply(&self.integrator.momentum()).to_vec())
     }
     fn info(&self) -> integrators::MethodInfo {
         self.integrator.info()
