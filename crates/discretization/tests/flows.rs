@@ -190,6 +190,78 @@ fn lie_poisson_theta_0_scheme_converges_forward() {
     check::<Cayley>();
 }
 
+/// Negative control for NOTES.md slip 2: the scheme of §4 with eq. (20)'s printed sign,
+/// `ξ + t 𝕀⁻¹ d^{L*}τ_ξ(μ_{k+1}) = 0`, `μ_{k+1} = Ad*_{τ(ξ)} μ_k`, `g_{k+1} = g_k τ(ξ)`, integrates
+/// the time-reversed flow: n steps of h converge (order 2) to the exact state at −nh, computed
+/// independently by a hand-written RK4 on (Π, R) with steps −1e-4, and stay O(1) away from the
+/// state at +nh.
+#[test]
+fn the_printed_sign_of_eq_20_integrates_the_time_reversed_flow() {
+    let ii = Vector3::new(1.0, 0.5, 0.25);
+    let pi0 = Vector3::new(0.3, 1.0, -0.5);
+    fn printed<T: Tau<So3>>(
+        ii: Vector3<f64>,
+        pi0: Vector3<f64>,
+        h: f64,
+        n: usize,
+    ) -> (So3, Vector3<f64>) {
+        let (mut g, mut mu) = (So3::identity(), pi0);
+        for _ in 0..n {
+            let mut xi = -(h * mu).component_mul(&ii);
+            for _ in 0..100 {
+                let next = -(h * T::dtau_left_dual_apply(&xi, &T::tau(&xi).coadjoint_apply(&mu)))
+                    .component_mul(&ii);
+                let done = (next - xi).amax() < 1e-16;
+                xi = next;
+                if done {
+                    break;
+                }
+            }
+            let tau = T::tau(&xi);
+            (g, mu) = (g.compose(&tau), tau.coadjoint_apply(&mu));
+        }
+        (g, mu)
+    }
+    // Π' = Π × Ω, R' = R Ω̂ by RK4 at step `dt` (negative: backwards in time).
+    let rk4 = |dt: f64, n: usize| {
+        let skew = |w: Vector3<f64>| {
+            nalgebra::Matrix3::new(0.0, -w.z, w.y, w.z, 0.0, -w.x, -w.y, w.x, 0.0)
+        };
+        let f = |p: &Vector3<f64>, r: &nalgebra::Matrix3<f64>| {
+            let w = p.component_mul(&ii);
+            (p.cross(&w), r * skew(w))
+        };
+        let (mut p, mut r) = (pi0, nalgebra::Matrix3::identity());
+        for _ in 0..n {
+            let (k1, l1) = f(&p, &r);
+            let (k2, l2) = f(&(p + k1 * (dt / 2.0)), &(r + l1 * (dt / 2.0)));
+            let (k3, l3) = f(&(p + k2 * (dt / 2.0)), &(r + l2 * (dt / 2.0)));
+            let (k4, l4) = f(&(p + k3 * dt), &(r + l3 * dt));
+            p += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (dt / 6.0);
+            r += (l1 + l2 * 2.0 + l3 * 2.0 + l4) * (dt / 6.0);
+        }
+        (p, r)
+    };
+    let (back, forward) = (rk4(-1e-4, 10_000), rk4(1e-4, 10_000));
+    let dist = |(g, mu): &(So3, Vector3<f64>), (p, r): &(Vector3<f64>, nalgebra::Matrix3<f64>)| {
+        (g.as_matrix() - r).amax().max((mu - p).amax())
+    };
+    let check = |run: &dyn Fn(f64, usize) -> (So3, Vector3<f64>),
+                 dist: &dyn Fn(&(So3, Vector3<f64>)) -> (f64, f64)| {
+        let (b1, f1) = dist(&run(0.02, 50));
+        let (b2, _) = dist(&run(0.01, 100));
+        let order = (b1 / b2).log2();
+        assert!(
+            (order - 2.0).abs() < 0.2 && b2 < 1e-3,
+            "to the state at −T: errors {b1:.3e}, {b2:.3e} (order {order:.2})"
+        );
+        assert!(f1 > 0.1, "to the state at +T: {f1:.3e}");
+    };
+    let both = |s: &(So3, Vector3<f64>)| (dist(s, &back), dist(s, &forward));
+    check(&|h, n| printed::<ExpMap>(ii, pi0, h, n), &both);
+    check(&|h, n| printed::<Cayley>(ii, pi0, h, n), &both);
+}
+
 #[test]
 fn inverse_methods_are_the_closed_forms_where_they_exist() {
     let exp_half = DiscretizationMap::<ExpMap>::new(0.3).unwrap();

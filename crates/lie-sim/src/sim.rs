@@ -799,9 +799,11 @@ impl<I: Integrator> Simulation for Adapter<I> {
     fn spatial_momentum(&self) -> Option<Vec<f64>> {
         // Ad*_{g⁻¹} μ = (Ad_{g⁻¹})ᵀ μ: `coadjoint_apply` is the dual map of Ad, so it is applied
         // to g⁻¹ (on SO(3), Ad_{R⁻¹} = Rᵀ and J = R Π).
-        self.integrator
-            .configuration()
-            .map(|g| g.inverse().coadjoint_apply(&self.integrator.momentum()).to_vec())
+        self.integrator.configuration().map(|g| {
+            g.inverse()
+                .coadjoint_apply(&self.integrator.momentum())
+                .to_vec()
+        })
     }
     fn info(&self) -> integrators::MethodInfo {
         self.integrator.info()
