@@ -6,7 +6,7 @@
 //! TG compose against it is the cost of the bundle wrapper itself. TTG compose is roughly three of
 //! each (the nested product calls TG's Ad, which is two base Ad and one bracket).
 //!
-//! Run: `cargo bench --bench bundles` (add `-- --quick` for a smoke run).
+//! Run: `cargo bench -p lie-integrators --bench bundles` (add `-- --quick` for a smoke run).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lie_groups::{LieGroup, Se3, So3, Vector};

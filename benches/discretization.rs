@@ -2,7 +2,7 @@
 //! SE(3), for τ = exp and τ = Cayley and θ ∈ {0, ½}. Everything in the hot path works on the base
 //! group's stack types (nalgebra vectors and matrices), so no map allocates.
 //!
-//! Run: `cargo bench --bench discretization` (add `-- --quick` for a smoke run).
+//! Run: `cargo bench -p lie-integrators --bench discretization` (add `-- --quick` for a smoke run).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use discretization::DiscretizationMap;

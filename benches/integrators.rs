@@ -12,7 +12,7 @@
 //!
 //! Each benchmark steps one integrator along its trajectory (`step(h)` per iteration); the motion
 //! is bounded, so the cost per step is stationary. Run:
-//! `cargo bench --bench integrators -- --warm-up-time 1 --measurement-time 2`.
+//! `cargo bench -p lie-integrators --bench integrators -- --warm-up-time 1 --measurement-time 2`.
 
 use criterion::{
     criterion_group, criterion_main, measurement::WallTime, BenchmarkGroup, Criterion,

@@ -8,7 +8,7 @@
 //! Every row passes its operands the same way, through `black_box(&x)` (by reference), so no row
 //! pays for copying its inputs through `black_box` by value.
 //!
-//! Run: `cargo bench --bench lie_groups` (add `-- --quick` for a smoke run). `black_box` is
+//! Run: `cargo bench -p lie-integrators --bench lie_groups` (add `-- --quick` for a smoke run). `black_box` is
 //! `std::hint::black_box` (criterion 0.8 deprecates its own re-export).
 
 use criterion::{criterion_group, criterion_main, Criterion};

@@ -1,7 +1,7 @@
 //! exp/log on SO(n) for n = 3, 10, 50 (faer, Padé expm and the eigen-based log), and the SO(2)/SE(2)
 //! hot paths (compose, exp, log, Ad) with nalgebra `UnitComplex`/`Isometry2` rows for comparison.
 //!
-//! `cargo bench --bench matrix_groups` (add `-- --quick` for a smoke run).
+//! `cargo bench -p lie-integrators --bench matrix_groups` (add `-- --quick` for a smoke run).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use lie_groups::{LieGroup, Se2, So2, SoN, Vector};

@@ -14,7 +14,7 @@
 //! - the same over T = 10⁵ for the coarse steps h ≥ 0.05.
 //!
 //! It prints the table, a summary (the cheapest method reaching each error target) and writes
-//! `docs/work-precision.csv`. Run: `cargo run --release --example work_precision` (a few minutes).
+//! `docs/work-precision.csv`. Run: `cargo run --release -p lie-integrators --example work_precision` (a few minutes).
 
 use lie_integrators::integrators::baselines::{QuaternionRk4, Rkmk4};
 use lie_integrators::integrators::exact::ExactFreeBody;
