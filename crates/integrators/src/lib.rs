@@ -28,7 +28,10 @@
 //! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
 //! - [`forces`]: external forces and controls `F_ext(t, g, ξ)` ([`forces::Forced`], scheduled body
 //!   torques, damping), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
-//!   Lagrange–d'Alembert way (`tests/forces.rs`: orders 2/1/4, exact momentum-map balance).
+//!   Lagrange–d'Alembert way (`tests/forces.rs`: orders 2/1/4, exact momentum-map balance) and by
+//!   the splittings in their kicks (`tests/forced_splitting.rs`: a torque keeps Blanes–Moan 4 at
+//!   order 4.0, damping makes every splitting order 2.0, the momentum map moves by the applied
+//!   impulse to 1.5e-15 per step).
 //! - [`dense_output`] and [`events`]: the state between steps by a cubic Hermite interpolant on
 //!   G × 𝔤* (`g₀ exp Z(s)`), output at requested times and zero crossings of event functions
 //!   located to a tolerance, for any integrator ([`dense_output::integrate_dense`]).

@@ -65,6 +65,11 @@ pub trait System<G: LieGroup> {
     fn external_force(&self, _t: f64, _g: Option<&G>, _xi: &G::Algebra) -> G::Algebra {
         G::Algebra::zeros(G::dim())
     }
+    /// Whether the external force reads the body velocity ξ ([`crate::forces::ExternalForce::reads_velocity`]);
+    /// `false` for an unforced system.
+    fn external_force_reads_velocity(&self) -> bool {
+        self.is_forced()
+    }
     /// Whether integrators need the configuration g: a potential, or an external force that reads
     /// g.
     fn needs_configuration(&self) -> bool {

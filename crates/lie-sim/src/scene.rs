@@ -56,7 +56,9 @@
 //! ```
 //!
 //! `[forces]` is applied in the discrete Lagrange–d'Alembert way (`integrators::forces`) by
-//! `lie-poisson`, `euler-poincare`, `rk4` and `rkmk4`; the other methods refuse it. The torque
+//! `lie-poisson`, `euler-poincare`, `rk4` and `rkmk4`, and in the kicks of `splitting` and
+//! `kinetic-kick` (exactly for a torque, by the implicit midpoint rule for damping: order 2);
+//! `exact`, `euler-arnold` and `modified` refuse it. The torque
 //! schedule holds its first value before `times[0]` and its last after the end.
 //!
 //! `composition` names a scheme of `integrators::CompositionScheme` (`triple-jump-4|6|8|10`,
@@ -1175,15 +1177,11 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
 /// modified Hamiltonian off the free body. The one place these rules live: the scene check and `sim::dispatch` both ask here.
 pub fn inapplicable(spec: &MethodSpec, system: &System) -> Option<String> {
     if system.forces().is_some()
-        && (spec.modified
-            || matches!(
-                spec.method,
-                Method::Splitting | Method::KineticKick | Method::Exact | Method::EulerArnold
-            ))
+        && (spec.modified || matches!(spec.method, Method::Exact | Method::EulerArnold))
     {
         return Some(format!(
-            "{} does not take external forces ([forces]); use lie-poisson, euler-poincare, rk4 \
-             or rkmk4",
+            "{} does not take external forces ([forces]); use lie-poisson, euler-poincare, \
+             splitting, kinetic-kick, rk4 or rkmk4",
             spec.method_label()
         ));
     }

@@ -212,7 +212,8 @@ pub fn dispatch<J: Job>(
                 let forced = Forced::new(body, scene_force(f).map_err(built)?);
                 return job
                     .run(forced, p.momentum, so3(&p.attitude)?, |s, mu, g| {
-                        b.make_forced(s, mu, g)
+                        let flow = FreeBodyFlow::new(s.system());
+                        b.make_forced(s, flow, mu, g)
                     })
                     .map_err(built);
             }
@@ -228,7 +229,8 @@ pub fn dispatch<J: Job>(
                 let forced = Forced::new(top, scene_force(f).map_err(built)?);
                 return job
                     .run(forced, p.momentum, so3(&p.attitude)?, |s, mu, g| {
-                        b.make_forced(s, mu, g)
+                        let flow = FreeBodyFlow::new(s.system().body());
+                        b.make_forced(s, flow, mu, g)
                     })
                     .map_err(built);
             }
@@ -517,20 +519,22 @@ impl Builder {
         }
     }
 
-    /// A forced system on SO(3): Lie–Poisson, Euler–Poincaré, RK4 or RKMK4 (the methods that
-    /// take external forces; the others are refused by [`inapplicable`] before).
+    /// A forced system on SO(3): Lie–Poisson, Euler–Poincaré, RK4, RKMK4, the splittings and the
+    /// kinetic–kick with `flow`, the exact flow of its body (the methods that take external forces;
+    /// the others are refused by [`inapplicable`] before).
     fn make_forced<S>(
         &self,
         system: S,
+        flow: FreeBodyFlow,
         mu0: Vector3<f64>,
         g0: Option<So3>,
     ) -> Result<Boxed<So3>, IntegratorError>
     where
-        S: integrators::System<So3> + 'static,
+        S: SplitSystem<So3> + 'static,
     {
         match self.method.method {
-            Method::Rk4 => Ok(Boxed::new(QuaternionRk4::new(system, mu0, g0)?)),
-            _ => self.make(system, mu0, g0),
+            Method::KineticKick => self.make_kinetic_or_split(system, flow, mu0, g0),
+            _ => self.make_so3(system, mu0, g0),
         }
     }
 

@@ -51,4 +51,7 @@ impl<G: LieGroup> ExternalForce<G> for BodyTorque<G> {
             G::Algebra::from_fn(n, |i| v[i])
         }
     }
+    fn reads_velocity(&self) -> bool {
+        false
+    }
 }

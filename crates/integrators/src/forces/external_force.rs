@@ -19,6 +19,12 @@ pub trait ExternalForce<G: LieGroup> {
     fn needs_configuration(&self) -> bool {
         false
     }
+    /// Whether the force reads the velocity ξ (damping, drag). The splittings then solve their
+    /// force kick by the implicit midpoint rule (order 2) instead of applying it exactly. The
+    /// provided answer is the safe one, `true`.
+    fn reads_velocity(&self) -> bool {
+        true
+    }
 }
 
 impl<G, F> ExternalForce<G> for F
@@ -42,6 +48,9 @@ impl<G: LieGroup, A: ExternalForce<G>, B: ExternalForce<G>> ExternalForce<G> for
     fn needs_configuration(&self) -> bool {
         self.0.needs_configuration() || self.1.needs_configuration()
     }
+    fn reads_velocity(&self) -> bool {
+        self.0.reads_velocity() || self.1.reads_velocity()
+    }
 }
 
 /// A force that may be absent: `F_ext` when `Some`, zero when `None`.
@@ -55,5 +64,8 @@ impl<G: LieGroup, F: ExternalForce<G>> ExternalForce<G> for Option<F> {
     fn needs_configuration(&self) -> bool {
         self.as_ref()
             .is_some_and(ExternalForce::needs_configuration)
+    }
+    fn reads_velocity(&self) -> bool {
+        self.as_ref().is_some_and(ExternalForce::reads_velocity)
     }
 }

@@ -1,6 +1,7 @@
 //! [`Forced`]: a system with an external force attached.
 
 use crate::forces::ExternalForce;
+use crate::splitting::SplitSystem;
 use crate::System;
 use lie_groups::LieGroup;
 
@@ -53,6 +54,9 @@ impl<G: LieGroup, S: System<G>, F: ExternalForce<G>> System<G> for Forced<S, F> 
     fn is_forced(&self) -> bool {
         true
     }
+    fn external_force_reads_velocity(&self) -> bool {
+        self.force.reads_velocity()
+    }
     fn external_force(&self, t: f64, g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
         self.force.force(t, g, xi)
     }
@@ -64,5 +68,20 @@ impl<G: LieGroup, S: System<G>, F: ExternalForce<G>> System<G> for Forced<S, F> 
     }
     fn energy(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
         self.system.energy(mu, g)
+    }
+}
+
+/// The kinetic pieces of the unforced system: the splittings then apply the force in their kicks
+/// ([`crate::splitting`]).
+impl<G: LieGroup, S: SplitSystem<G>, F: ExternalForce<G>> SplitSystem<G> for Forced<S, F> {
+    fn pieces(&self) -> usize {
+        self.system.pieces()
+    }
+    fn piece_velocity(&self, i: usize, mu: &G::Algebra) -> G::Algebra {
+        self.system.piece_velocity(i, mu)
+    }
+    #[inline]
+    fn piece_flow(&self, i: usize, t: f64, mu: &mut G::Algebra, g: Option<&mut G>) {
+        self.system.piece_flow(i, t, mu, g)
     }
 }

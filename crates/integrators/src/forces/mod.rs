@@ -16,8 +16,11 @@
 //! - **Euler–Poincaré** (eq. 18): F_ext joins F(g) in the field `ξ̇ = ∂²h/∂μ² (ad*_ξ μ + F + F_ext)`
 //!   evaluated at `(t_k + θh, ḡ, ξ)`.
 //! - **RK4, RKMK4**: F_ext at each stage's time, configuration and velocity.
-//! - The splittings and the exact flow take systems with exact pieces only ([`Forced`] is not
-//!   a `SplitSystem`): a forced system is refused at compile time.
+//! - **Splittings** ([`crate::splitting`]): F_ext joins the kick at the kick's time, exactly for
+//!   forces of (t, g) ([`ExternalForce::reads_velocity`] false: the scheme keeps its order) and by the
+//!   implicit midpoint rule for forces that read ξ (order 2, symmetric). [`Forced`] is a
+//!   `SplitSystem` when its system is.
+//! - The exact free-body flow as a method takes the free body alone.
 //!
 //! The Newton matrix of the implicit steps omits `∂F_ext/∂ξ` (as it omits the potential's
 //! derivative): strong forcing (`h ‖∂F_ext/∂ξ‖ ≳ 1`) slows or stops the iteration, which then

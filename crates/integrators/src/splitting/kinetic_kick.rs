@@ -1,9 +1,9 @@
 //! Splittings into the exact kinetic flow and potential kicks.
 
+use super::kick::kick;
 use super::SplittingScheme;
 use crate::compose::{StateSnapshot, SymmetricMethod};
 use crate::lie_poisson::check_state;
-use crate::system::force;
 use crate::{Integrator, IntegratorError, MethodInfo, System};
 use lie_groups::{LieGroup, Vector};
 
@@ -25,7 +25,10 @@ pub trait KineticFlow<G: LieGroup> {
 }
 
 /// The splitting `h + V` into the exact kinetic flow B = φ_t and the kick A: `μ ↦ μ + tF(g)`,
-/// `F(g) = −T*_e L_g dV(g)`, composed with the coefficients of a [`SplittingScheme`]:
+/// `F(g) = −T*_e L_g dV(g)` (plus an external force of a [`crate::forces::Forced`] system at the
+/// kick's time, advanced by the kinetic flows: exact for forces of (t, g), the implicit midpoint
+/// rule for forces that read ξ, which caps the order at 2), composed with the coefficients of a
+/// [`SplittingScheme`]:
 ///
 /// ```text
 /// Ψ_h = A_{a₁h} ∘ B_{b₁h} ∘ A_{a₂h} ∘ … ∘ B_{b_m h} ∘ A_{a_{m+1}h}
@@ -96,12 +99,13 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
         let mut mu = self.mu.clone();
         let mut g = self.g.clone();
         let (a, b) = (self.scheme.a(), self.scheme.b());
+        // The kicks' time: t_k advanced by the kinetic flows (t' = 1 belongs to the kinetic part).
+        let mut t = self.t;
         for (i, &ai) in a.iter().enumerate() {
-            if let Some(f) = force(&self.system, g.as_ref()) {
-                mu = mu.axpy(ai * h, &f);
-            }
+            kick(&self.system, t, ai * h, &mut mu, g.as_ref())?;
             if let Some(&bi) = b.get(i) {
                 self.kinetic.kinetic_flow(bi * h, &mut mu, g.as_mut())?;
+                t += bi * h;
             }
         }
         if !mu.is_finite() {
@@ -151,13 +155,17 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
     fn method_name(&self) -> String {
         format!("kinetic-kick({})", self.scheme.name())
     }
-    /// The scheme's order; symmetric, explicit, Poisson; without a potential it is the exact flow
-    /// (energy kept too).
+    /// The scheme's order (at most 2 with a velocity-dependent force, whose kick is the implicit
+    /// midpoint rule); symmetric, explicit, Poisson; without a potential or force it is the exact
+    /// flow (energy kept too).
     fn info(&self) -> MethodInfo {
-        let free = !self.system.has_potential();
+        let forced = self.system.is_forced();
+        let free = !self.system.has_potential() && !forced;
         MethodInfo {
             order: if free {
                 MethodInfo::EXACT
+            } else if self.system.external_force_reads_velocity() {
+                self.scheme.order().min(2)
             } else {
                 self.scheme.order()
             },
@@ -165,7 +173,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
             explicit: true,
             poisson: true,
             casimirs: free,
-            momentum_map: true,
+            momentum_map: !forced,
             energy: free,
             on_group: true,
         }

@@ -9,6 +9,11 @@
 //!   rotation about the principal axis aᵢ, `hᵢ = (aᵢ·Π)²/2Iᵢ`). Declared by [`SplitSystem`].
 //! - The **potential piece** V(g): g is fixed, so its flow is the kick `μ ↦ μ + t F(g)`,
 //!   `F(g) = −T*_e L_g dV(g)`.
+//! - **External forces** ([`crate::forces::Forced`] systems): F_ext(t, g, ξ) joins the kick at the
+//!   kick's time (the kinetic flows advance t). Forces of (t, g) alone — body torques, control
+//!   schedules — are kicked exactly, so the schemes keep their order; forces that read ξ (damping,
+//!   drag) are kicked by the implicit midpoint rule (a fixed-point iteration, still explicit in the
+//!   sense of no Newton matrix), symmetric and of order 2.
 //! - A whole **exact kinetic flow** ([`KineticFlow`]): the flow of h itself, when it is known in
 //!   closed form (the axisymmetric body, [`AxisymmetricFlow`]; the general free body).
 //!
@@ -41,12 +46,14 @@
 //! ```
 
 mod axisymmetric_flow;
+mod kick;
 mod kinetic_kick;
 mod scheme;
 mod split_system;
 mod strang;
 
 pub use axisymmetric_flow::AxisymmetricFlow;
+pub use kick::KICK_MAX_ITERATIONS;
 pub use kinetic_kick::{KineticFlow, KineticKick};
 pub use scheme::SplittingScheme;
 pub use split_system::SplitSystem;

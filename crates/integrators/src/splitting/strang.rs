@@ -1,9 +1,9 @@
 //! The Strang splitting of all pieces: order 2, symmetric, explicit.
 
+use super::kick::kick;
 use super::SplitSystem;
 use crate::compose::{StateSnapshot, SymmetricMethod};
 use crate::lie_poisson::check_state;
-use crate::system::force;
 use crate::{Integrator, IntegratorError, MethodInfo};
 use core::marker::PhantomData;
 use lie_groups::{LieGroup, Vector};
@@ -14,7 +14,11 @@ use lie_groups::{LieGroup, Vector};
 /// Ψ_h = V_{h/2} ∘ φ⁰_{h/2} ∘ … ∘ φⁿ⁻²_{h/2} ∘ φⁿ⁻¹_h ∘ φⁿ⁻²_{h/2} ∘ … ∘ φ⁰_{h/2} ∘ V_{h/2}
 /// ```
 ///
-/// (applied right to left; `V_t: μ ↦ μ + t F(g)` is the kick, present only with a potential).
+/// (applied right to left; `V_t: μ ↦ μ + t F(g)` is the kick, present only with a potential or an
+/// external force: [`crate::forces::Forced`] systems are split too, the force joining the kick at the
+/// kick's time — t_k first, t_k + h last — by [`kick`](super::kick) rules: exact for forces of
+/// (t, g), the implicit midpoint rule for forces that read ξ, so the step stays symmetric and of
+/// order 2).
 /// Order 2, symmetric (Ψ_{−h} = Ψ_h⁻¹: the sequence is a palindrome of exact flows), explicit, and
 /// a Poisson map preserving each coadjoint orbit; compose it with [`crate::Composition`] for order
 /// 4 to 10. Without a potential it keeps the Casimirs and the spatial momentum map to round-off.
@@ -87,12 +91,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
         let half = 0.5 * h;
         let mut mu = self.mu.clone();
         let mut g = self.g.clone();
-        let kick = |mu: &mut G::Algebra, g: &Option<G>| {
-            if let Some(f) = force(&self.system, g.as_ref()) {
-                *mu = mu.axpy(half, &f);
-            }
-        };
-        kick(&mut mu, &g);
+        kick(&self.system, self.t, half, &mut mu, g.as_ref())?;
         let last = self.system.pieces() - 1;
         for i in 0..last {
             self.system.piece_flow(i, half, &mut mu, g.as_mut());
@@ -101,7 +100,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
         for i in (0..last).rev() {
             self.system.piece_flow(i, half, &mut mu, g.as_mut());
         }
-        kick(&mut mu, &g);
+        kick(&self.system, self.t + h, half, &mut mu, g.as_ref())?;
         if !mu.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "momentum μ_{k+1}",
@@ -150,16 +149,18 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
     fn method_name(&self) -> String {
         "splitting(strang)".into()
     }
-    /// Order 2, symmetric, explicit, Poisson; Casimirs kept without a potential (the kick moves μ
-    /// off its orbit, as the exact flow does); the spatial momentum map kept for an invariant system.
+    /// Order 2, symmetric, explicit, Poisson; Casimirs kept without a potential or force (the kick
+    /// moves μ off its orbit, as the exact flow does); the spatial momentum map kept for an
+    /// invariant unforced system. Explicit also with a velocity-dependent force, whose kick is a
+    /// small fixed-point iteration (no Newton matrix).
     fn info(&self) -> MethodInfo {
         MethodInfo {
             order: 2,
             symmetric: true,
             explicit: true,
             poisson: true,
-            casimirs: !self.system.has_potential(),
-            momentum_map: true,
+            casimirs: !self.system.has_potential() && !self.system.is_forced(),
+            momentum_map: !self.system.is_forced(),
             energy: false,
             on_group: true,
         }
