@@ -156,7 +156,9 @@ fn kinetic_kick_keeps_its_order_with_a_torque_of_time() {
 
 /// A pure body torque changes the spatial momentum map J = RΠ by exactly the applied spatial
 /// impulse: for Strang, `J_{k+1} − J_k = (h/2)(R_k u(t_k) + R_{k+1} u(t_k + h))` at every step to
-/// round-off (a few ulps of |J|), and over 2000 steps to a walk of roundings.
+/// round-off (≤ 32 ulps of |J|: five plane rotations whose c² + s² = 1 rounds, J formed from R and
+/// Π at both ends), and over 2000 steps to a
+/// walk of roundings.
 #[test]
 fn a_body_torque_changes_the_momentum_map_by_the_applied_impulse() {
     let mut s = strang(None);
@@ -180,7 +182,7 @@ fn a_body_torque_changes_the_momentum_map_by_the_applied_impulse() {
         impulse.amax()
     );
     assert!(
-        worst_step < 8.0 * f64::EPSILON * j0.amax(),
+        worst_step < 32.0 * f64::EPSILON * j0.amax(),
         "{worst_step:e}"
     );
     assert!(off < 2000.0 * 2.0 * f64::EPSILON * j0.amax(), "{off:e}");

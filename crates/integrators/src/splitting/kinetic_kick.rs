@@ -2,6 +2,7 @@
 
 use super::kick::kick;
 use super::SplittingScheme;
+use super::RENORMALIZE_EVERY;
 use crate::compose::{StateSnapshot, SymmetricMethod};
 use crate::lie_poisson::check_state;
 use crate::{Integrator, IntegratorError, MethodInfo, System};
@@ -46,6 +47,8 @@ pub struct KineticKick<G: LieGroup, S: System<G>, K: KineticFlow<G>> {
     t: f64,
     mu: G::Algebra,
     g: Option<G>,
+    /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
+    unnormalized: u32,
 }
 
 impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
@@ -66,6 +69,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
             t: 0.0,
             mu: mu0,
             g: g0,
+            unnormalized: 0,
         })
     }
     /// Resets the state to (t, μ, g), with the checks of [`KineticKick::new`].
@@ -77,6 +81,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
         self.t = t;
         self.mu = mu;
         self.g = g;
+        self.unnormalized = 0;
         Ok(())
     }
     /// The scheme.
@@ -113,8 +118,14 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
                 what: "momentum μ_{k+1}",
             });
         }
+        // Each flow moves g by an exact group element, so g leaves the group only by a random walk
+        // of roundings: renormalized every RENORMALIZE_EVERY steps, not at each (which would bias
+        // the spatial momentum map, as for Lie–Poisson).
+        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
         if let Some(g1) = g.as_mut() {
-            *g1 = g1.normalize();
+            if renormalize {
+                *g1 = g1.normalize();
+            }
             if !g1.is_finite() {
                 return Err(IntegratorError::NonFinite {
                     what: "configuration g_{k+1}",
@@ -124,6 +135,11 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
         self.mu = mu;
         self.g = g;
         self.t += h;
+        self.unnormalized = if renormalize {
+            0
+        } else {
+            self.unnormalized + 1
+        };
         Ok(())
     }
     fn time(&self) -> f64 {

@@ -54,6 +54,14 @@ mod strang;
 
 pub use axisymmetric_flow::AxisymmetricFlow;
 pub use kick::KICK_MAX_ITERATIONS;
+
+/// A splitting renormalizes g onto the group every this many steps. Each piece's flow multiplies
+/// g by an exact group element, so in between g leaves the group only by a random walk of
+/// roundings — up to five plane rotations per step, ‖gᵀg − I‖ ≈ ε√(5k) ≲ 1e-14 here —
+/// while renormalizing at every step would round g once more per step, with a bias that the
+/// spatial momentum map accumulates (as for Lie–Poisson, whose products are one per step:
+/// [`crate::lie_poisson::RENORMALIZE_EVERY`]).
+pub const RENORMALIZE_EVERY: u32 = 256;
 pub use kinetic_kick::{KineticFlow, KineticKick};
 pub use scheme::SplittingScheme;
 pub use split_system::SplitSystem;

@@ -2,6 +2,7 @@
 
 use super::kick::kick;
 use super::SplitSystem;
+use super::RENORMALIZE_EVERY;
 use crate::compose::{StateSnapshot, SymmetricMethod};
 use crate::lie_poisson::check_state;
 use crate::{Integrator, IntegratorError, MethodInfo};
@@ -43,6 +44,8 @@ pub struct Splitting<G: LieGroup, S: SplitSystem<G>> {
     t: f64,
     mu: G::Algebra,
     g: Option<G>,
+    /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
+    unnormalized: u32,
     _group: PhantomData<G>,
 }
 
@@ -61,6 +64,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
             t: 0.0,
             mu: mu0,
             g: g0,
+            unnormalized: 0,
             _group: PhantomData,
         })
     }
@@ -73,6 +77,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
         self.t = t;
         self.mu = mu;
         self.g = g;
+        self.unnormalized = 0;
         Ok(())
     }
     /// The system.
@@ -106,9 +111,14 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
                 what: "momentum μ_{k+1}",
             });
         }
+        // Each flow moves g by an exact group element, so g leaves the group only by a random walk
+        // of roundings: renormalized every RENORMALIZE_EVERY steps, not at each (which would bias
+        // the spatial momentum map, as for Lie–Poisson).
+        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
         if let Some(g1) = g.as_mut() {
-            // Keep g on the group to round-off over any number of steps.
-            *g1 = g1.normalize();
+            if renormalize {
+                *g1 = g1.normalize();
+            }
             if !g1.is_finite() {
                 return Err(IntegratorError::NonFinite {
                     what: "configuration g_{k+1}",
@@ -118,6 +128,11 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
         self.mu = mu;
         self.g = g;
         self.t += h;
+        self.unnormalized = if renormalize {
+            0
+        } else {
+            self.unnormalized + 1
+        };
         Ok(())
     }
     fn time(&self) -> f64 {
