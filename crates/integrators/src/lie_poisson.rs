@@ -311,8 +311,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
 
     /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ:
     /// `I − h H(μ̄) ∂μ̄/∂ξ` with the map's [`LiftedMap::base_momentum_derivative`] (exact without a
-    /// potential where τ has closed forms, SO(3) with exp and Cayley; exact up to O(h²) otherwise;
-    /// the force's derivative is dropped, see [`crate::solver`]).
+    /// potential where D τ is exact: exp on every group, Cayley on SO(3), SE(3), SE(2); exact up
+    /// to O(h²) otherwise; the force's derivative is dropped, see [`crate::solver`]).
     fn jacobian(&self, h: f64, xi: &G::Algebra, ev: &Evaluation<G>) -> G::Operator {
         let dbar = self.map.base_momentum_derivative(xi, &self.mu, &ev.up);
         G::Operator::identity(G::dim()).add(&self.system.hessian(&ev.bar).compose(&dbar).scale(-h))

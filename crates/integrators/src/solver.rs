@@ -15,13 +15,16 @@
 //! - [`SolverKind::Newton`]: `ξ ← ξ − J(ξ)⁻¹ r(ξ)` with the analytic Jacobian J re-assembled at every
 //!   iterate by the integrator from the operators of the group and the system (Ad, ad*, d^L τ,
 //!   ∂²h/∂μ², and the second derivative `D(ζ; μ) = ∂/∂ζ (d^{L*}τ_ζ μ)` from
-//!   [`lie_groups::Tau::dtau_left_dual_derivative`]). Where the group has a closed form of D
-//!   (SO(3) with exp and Cayley) the Lie–Poisson Jacobian is exact and Newton converges
-//!   quadratically; otherwise D is its leading term `δ ↦ −½ ad*_δ μ` (exact at ζ = 0 for every τ
-//!   with `τ(ζ) = exp(ζ) + O(ζ³)`, which holds for exp and Cayley) and J is exact up to O(h²), so the
-//!   iteration contracts by a factor O(h²) per step. The derivative of the force is dropped in
-//!   both cases (an O(h²) error with a potential); the Euler–Poincaré Jacobian has its own
-//!   O(h²) approximations (see [`crate::euler_poincare`]).
+//!   [`lie_groups::Tau::dtau_left_dual_derivative`]). D is exact for τ = exp on every group (a
+//!   series, [`lie_groups::LieGroup::dexp_left_dual_derivative`]) and for Cayley on SO(3), SE(3)
+//!   and SE(2) (closed forms): there the Lie–Poisson Jacobian of a system without potential is
+//!   exact and Newton converges quadratically — on the free SE(3) body at h = 0.1, 3.0 iterations
+//!   per step, as many as Newton on a central-difference Jacobian (12.0 with the former
+//!   first-order D; `tests/newton_jacobian.rs`). Elsewhere (Cayley on SO(n), GL(n), a user's τ)
+//!   D is its leading term `δ ↦ −½ ad*_δ μ` and J is exact up to O(h²). The derivative of the
+//!   force F(ḡ(ξ)) is dropped (an O(h²) error with a potential: at h = 0.1 the heavy top takes 5.4
+//!   iterations per step against 2.8 with the exact Jacobian); the Euler–Poincaré Jacobian has its
+//!   own O(h²) approximations (see [`crate::euler_poincare`]).
 //! - [`SolverKind::NewtonFiniteDifference`]: Newton with J from central differences of r
 //!   (2n residual evaluations per iteration): quadratic convergence, a documented fallback for
 //!   large steps where an O(h²) Jacobian error matters (groups without closed forms, potentials).

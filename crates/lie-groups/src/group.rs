@@ -128,11 +128,20 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
     /// covector μ, as the operator `δ ↦ (d/ds) d^{L*}exp_{ξ+sδ} μ |_{s=0}` (the second derivative
     /// of exp that Newton Jacobians of the Lie–Poisson step need).
     ///
-    /// The provided form is the first-order approximation `−½ ad*_{(·)} μ` (δ ↦ −½ ad*_δ μ): from
-    /// `d^{L*}exp_ξ = I − ½ ad*_ξ + O(ξ²)` it is exact at ξ = 0 and off by O(|ξ| |μ|) elsewhere.
-    /// Groups with a closed form override it with the exact derivative.
-    fn dexp_left_dual_derivative(_xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Operator {
-        half_ad_dual_operator::<Self>(mu)
+    /// The provided form is exact, from the series `d^{L*}exp_ξ μ = Σ_{k≥0} cₖ Pᵏ μ`,
+    /// `cₖ = (−1)ᵏ/(k+1)!`, `P = ad*_ξ`: differentiating each power,
+    ///
+    /// ```text
+    /// D = Σ_{k≥1} cₖ Sₖ,   S₁ = M(μ),   S_{k+1} = P Sₖ + M(Pᵏ μ),
+    /// ```
+    ///
+    /// with `M(ν): δ ↦ ad*_δ ν` ([`LieGroup::ad_dual_operator`]), summed until two consecutive
+    /// terms fall below ε‖D‖ (at most [`DEXP_DERIVATIVE_MAX_TERMS`]; the terms decay like
+    /// ‖ad_ξ‖ᵏ/k!, so ~20–40 terms for |ξ| ≲ π) — operator products only, no allocation for
+    /// fixed-size groups. Its first term is the first-order form `−½ M(μ)`. Groups with a
+    /// closed form override it (SO(3)).
+    fn dexp_left_dual_derivative(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Operator {
+        dexp_dual_derivative_series::<Self>(xi, mu)
     }
     /// Removes the round-off drift off the group that long products accumulate (RᵀR − I for
     /// rotations grows like √N ε over N products) by a correction of the size of that drift, so that
@@ -164,6 +173,38 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
 /// The operator `δ ↦ −½ ad*_δ μ`: the leading term of `∂/∂ξ (d^{L*}τ_ξ μ)` at ξ = 0 for every τ
 /// with `τ(ξ) = exp(ξ) + O(ξ³)` (exp and Cayley), the default of
 /// [`LieGroup::dexp_left_dual_derivative`] and [`crate::CayleyGroup::dcay_left_dual_derivative`].
+/// The most terms [`LieGroup::dexp_left_dual_derivative`]'s series sums (reached only for
+/// ‖ad_ξ‖ ≳ 15, far outside the steps the integrators take).
+pub const DEXP_DERIVATIVE_MAX_TERMS: usize = 80;
+
+/// `D exp(ξ; μ)` by the series of [`LieGroup::dexp_left_dual_derivative`].
+pub fn dexp_dual_derivative_series<G: LieGroup>(xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {
+    let p = G::ad(xi).transpose();
+    let mut nu = p.apply(mu); // Pᵏ μ for the next S
+    let mut s = G::ad_dual_operator(mu); // S₁
+    let mut c = -0.5; // c₁
+    let mut d = s.scale(c);
+    let mut small = 0;
+    for k in 1..DEXP_DERIVATIVE_MAX_TERMS {
+        // S_{k+1} = P Sₖ + M(Pᵏ μ), c_{k+1} = −cₖ/(k+2).
+        s = p.compose(&s).add(&G::ad_dual_operator(&nu));
+        nu = p.apply(&nu);
+        c = -c / (k as f64 + 2.0);
+        let term = s.scale(c);
+        let size = term.norm_max();
+        d = d.add(&term);
+        if size <= f64::EPSILON * d.norm_max() || size == 0.0 {
+            small += 1;
+            if small == 2 {
+                break;
+            }
+        } else {
+            small = 0;
+        }
+    }
+    d
+}
+
 pub(crate) fn half_ad_dual_operator<G: LieGroup>(mu: &G::Algebra) -> G::Operator {
     G::ad_dual_operator(mu).scale(-0.5)
 }

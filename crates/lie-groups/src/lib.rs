@@ -92,7 +92,9 @@ mod vector;
 pub mod testing;
 
 pub use error::{DomainReason, LieError, StructureCheck};
-pub use group::{nan_operator, Action, LieGroup};
+pub use group::{
+    dexp_dual_derivative_series, nan_operator, Action, LieGroup, DEXP_DERIVATIVE_MAX_TERMS,
+};
 pub use matrix::{GlN, SoN};
 pub use operator::{DenseMatrix, Operator};
 pub use power::{Power, PowerAlgebra};

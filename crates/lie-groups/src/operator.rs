@@ -91,6 +91,10 @@ impl<const N: usize> Operator<SVector<f64, N>> for SMatrix<f64, N, N> {
         let inv = nalgebra::Matrix::try_inverse(*self)?;
         inv.iter().all(|x| x.is_finite()).then_some(inv)
     }
+    #[inline]
+    fn norm_max(&self) -> f64 {
+        self.amax()
+    }
 }
 
 impl DenseMatrix for Mat<f64> {

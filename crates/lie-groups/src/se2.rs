@@ -334,6 +334,29 @@ impl CayleyGroup for Se2 {
         let h = 0.5 * w;
         Matrix3::new(1.0, 0.0, 0.0, -0.5 * vy, 1.0, h, 0.5 * vx, -h, 1.0) * k
     }
+    /// The exact `D cay(ξ; μ) = ∂/∂ξ (d^{L*}cay_ξ μ)`: with `k = 1/(1 + ω²/4)` and
+    /// `f = d^{L*}cay_ξ μ = k (m − v_y p_x/2 + v_x p_y/2, p_x − ω p_y/2, ω p_x/2 + p_y)` for
+    /// μ = (m, p_x, p_y), the columns are `∂f/∂ω = −(ω/2) k f + k (0, −p_y/2, p_x/2)`,
+    /// `∂f/∂v_x = k (p_y/2, 0, 0)`, `∂f/∂v_y = k (−p_x/2, 0, 0)`.
+    fn dcay_left_dual_derivative(xi: &Vector3<f64>, mu: &Vector3<f64>) -> Matrix3<f64> {
+        let (w, vx, vy) = (xi[0], xi[1], xi[2]);
+        let (m, px, py) = (mu[0], mu[1], mu[2]);
+        let k = 1.0 / (1.0 + 0.25 * w * w);
+        let h = 0.5 * w;
+        let f = Vector3::new(m - 0.5 * vy * px + 0.5 * vx * py, px - h * py, h * px + py) * k;
+        let dw = f * (-h * k) + Vector3::new(0.0, -0.5 * py, 0.5 * px) * k;
+        Matrix3::new(
+            dw[0],
+            0.5 * k * py,
+            -0.5 * k * px,
+            dw[1],
+            0.0,
+            0.0,
+            dw[2],
+            0.0,
+            0.0,
+        )
+    }
     /// `(d^L cay_ξ)⁻¹ = [[1 + ω²/4, 0, 0], [v_y/2 + ω v_x/4, 1, −ω/2], [−v_x/2 + ω v_y/4, ω/2, 1]]`
     /// (block form of `η̂ + [ξ̂, η̂]/2 − ξ̂ η̂ ξ̂/4`).
     fn dcay_left_inv(xi: &Vector3<f64>) -> Matrix3<f64> {

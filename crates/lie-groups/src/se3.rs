@@ -397,6 +397,26 @@ impl CayleyGroup for Se3 {
         let p_inv = Matrix3::identity() + (k * k - k * 2.0) / (4.0 + w.norm_squared());
         blocks(&d, &Matrix3::zeros(), &(skew(&tail(xi)) * d * -0.5), &p_inv)
     }
+    /// The exact `D cay(ξ; μ) = ∂/∂ξ (d^{L*}cay_ξ μ)`. From the blocks of [`Self::dcay_left`],
+    /// `d^{L*}cay_ξ (m, p) = (Dᵀ (m + ½ v × p), (I − ω̂/2)⁻¹ p)`, so with `q = m + ½ v × p` and
+    /// `y = (I − ω̂/2)⁻¹ p`:
+    /// `D cay = [[D cay_SO(3)(ω; q), −½ Dᵀ p̂], [−½ (I − ω̂/2)⁻¹ ŷ, 0]]`
+    /// (the SO(3) block is [`So3`]'s closed form; `∂_ω (I − ω̂/2)⁻¹ p · δ = ½ (I − ω̂/2)⁻¹ (δ × y)`).
+    fn dcay_left_dual_derivative(xi: &Vector6<f64>, mu: &Vector6<f64>) -> Matrix6<f64> {
+        let (w, v) = (head(xi), tail(xi));
+        let (m, p) = (head(mu), tail(mu));
+        let q = m + v.cross(&p) * 0.5;
+        let d = So3::dcay_left(&w);
+        let k = skew(&w);
+        let q_inv = Matrix3::identity() + (k * k + k * 2.0) / (4.0 + w.norm_squared());
+        let y = q_inv * p;
+        blocks(
+            &So3::dcay_left_dual_derivative(&w, &q),
+            &(d.transpose() * skew(&p) * -0.5),
+            &(q_inv * skew(&y) * -0.5),
+            &Matrix3::zeros(),
+        )
+    }
     /// `(d^L cay_ξ)⁻¹ = [[I + ω̂/2 + ωωᵀ/4, 0], [½ (I + ω̂/2) v̂, I + ω̂/2]]`: the blocks of
     /// `η̂ + [ξ̂, η̂]/2 − ξ̂ η̂ ξ̂/4`, whose translation part is `(I + ω̂/2)(u + ½ v̂ w)` for η = (w, u).
     fn dcay_left_inv(xi: &Vector6<f64>) -> Matrix6<f64> {

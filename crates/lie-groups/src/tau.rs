@@ -74,8 +74,9 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     }
     /// `D τ(ξ; μ) := ∂/∂ξ (d^{L*}τ_ξ μ)`, the operator `δ ↦ (d/ds) d^{L*}τ_{ξ+sδ} μ |_{s=0}`.
     ///
-    /// [`ExpMap`] and [`Cayley`] delegate to [`LieGroup::dexp_left_dual_derivative`] and
-    /// [`CayleyGroup::dcay_left_dual_derivative`] (exact where the group has a closed form); the
+    /// [`ExpMap`] and [`Cayley`] delegate to [`LieGroup::dexp_left_dual_derivative`] (exact on
+    /// every group) and [`CayleyGroup::dcay_left_dual_derivative`] (exact on SO(3), SE(3), SE(2)
+    /// and the composite groups built from them); the
     /// provided form is the first-order approximation `δ ↦ −½ ad*_δ μ`, exact at ξ = 0 for every
     /// τ with `τ(ξ) = exp(ξ) + O(ξ³)`.
     fn dtau_left_dual_derivative(_xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {

@@ -67,8 +67,7 @@ fn cayley_inverse_is_refused_at_a_half_turn() {
 
 // ∂/∂ω (d^{L*}τ_ω μ): the closed forms against central differences of `dtau_left_dual_apply`.
 
-use lie_groups::{Operator, Se3, Tau};
-use nalgebra::Vector6;
+use lie_groups::Tau;
 use proptest::prelude::*;
 
 /// Central differences of ξ ↦ d^{L*}τ_ξ μ, column j along the j-th basis vector, step `d`.
@@ -86,10 +85,6 @@ fn fd_dual_derivative<G: LieGroup, T: Tau<G>>(
         let m = T::dtau_left_dual_apply(&xi.axpy(-d, &e), mu);
         p.sub(&m).scale(0.5 / d)
     })
-}
-
-fn max_diff<G: LieGroup>(a: &G::Operator, b: &G::Operator) -> f64 {
-    a.add(&b.scale(-1.0)).norm_max()
 }
 
 /// The directions of ω are uniform in the cube; its size is spread over 1e-8 … 2 so that the
@@ -125,39 +120,6 @@ proptest! {
         let fd = fd_dual_derivative::<So3, Cayley>(&w, &mu, 1e-5);
         prop_assert!((exact - fd).amax() < 1e-8, "|ω| = {}: {}", w.norm(), (exact - fd).amax());
     }
-
-    /// The provided default `δ ↦ −½ ad*_δ μ` (used by Se3, which has no closed form) is exact at
-    /// ξ = 0 and first-order accurate: d^{L*}exp_ξ μ = μ − ½ ad*_ξ μ + (1/6)(ad*_ξ)² μ − …, so
-    /// its error is the derivative of the quadratic term, ≤ (1/3)‖ad‖² |ξ| |μ| ≲ 4 |ξ|_max |μ|_max
-    /// in max-norm entries (‖ad_δ‖ ≤ 2 for unit δ on 𝔰𝔢(3)). Checked: err ≤ 4 s |μ| at
-    /// |ξ|_max ≤ s = 1e-3, plus the FD error.
-    #[test]
-    fn se3_default_dual_derivative_is_first_order_accurate(
-        x in prop::array::uniform6(-1.0f64..1.0),
-        m in prop::array::uniform6(-1.0f64..1.0),
-    ) {
-        let mu = Vector6::from(m);
-        let s = 1e-3;
-        let xi = Vector6::from(x) * s;
-        for (t, (err, err0)) in [
-            ("exp", default_errors::<ExpMap>(&xi, &mu)),
-            ("cayley", default_errors::<Cayley>(&xi, &mu)),
-        ] {
-            prop_assert!(err0 < 1e-9, "{t}: default not exact at ξ = 0: {err0}");
-            prop_assert!(err <= 4.0 * s * mu.amax() + 1e-9, "{t}: err {err} > 4|ξ||μ|");
-        }
-    }
-}
-
-/// (error at ξ, error at 0) of Se3's default `dtau_left_dual_derivative` against central differences.
-fn default_errors<T: Tau<Se3>>(xi: &Vector6<f64>, mu: &Vector6<f64>) -> (f64, f64) {
-    let at = |x: &Vector6<f64>| {
-        max_diff::<Se3>(
-            &T::dtau_left_dual_derivative(x, mu),
-            &fd_dual_derivative::<Se3, T>(x, mu, 1e-5),
-        )
-    };
-    (at(xi), at(&Vector6::zeros()))
 }
 
 /// At |ω| = 1e-8 both closed forms equal their first-order expansions to full double precision
