@@ -120,6 +120,18 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
         update: &MomentumUpdate<G::Algebra>,
     ) -> G::Operator;
 
+    /// `∂μ̄/∂ν`: how the base momentum moves with the impulse ν of [`Self::momentum_update`]
+    /// (μ̄ is affine in ν), for the force's term of Newton's matrix. `None` where the map does not
+    /// provide it (the integrators then leave that term out).
+    fn base_momentum_impulse_derivative(&self, _eta: &G::Algebra) -> Option<G::Operator> {
+        None
+    }
+    /// `ḡ⁻¹ ∂ḡ/∂η`, the left-trivialized derivative of the base point [`Self::base_point`] in η
+    /// (g_k fixed), for the force's term of Newton's matrix; `None` where not provided.
+    fn base_point_derivative(&self, _eta: &G::Algebra) -> Option<G::Operator> {
+        None
+    }
+
     /// The body velocity `ξ_k` of the first point of `R̃_d^T(ḡ, ξ, η, ζ)`.
     fn first_velocity(&self, eta: &G::Algebra, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra;
     /// The body velocity `ξ_{k+1}` of the second point of `R̃_d^T(ḡ, ξ, η, ζ)`.
@@ -274,6 +286,26 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             dbar = dbar.add(&T::dtau_left_dual_derivative(&xa.neg(), mu_k).scale(-th * th));
         }
         dbar
+    }
+
+    /// `∂μ̄/∂ν = (1−θ) d^{L*}τ_{(1−θ)η} Ad*_{τ((1−θ)η)}` (from `μ_{k+1} = Ad*_{τ((1−θ)η)}(… + ν)`).
+    fn base_momentum_impulse_derivative(&self, eta: &G::Algebra) -> Option<G::Operator> {
+        let b = 1.0 - self.theta();
+        if b == 0.0 {
+            return Some(G::Operator::identity(G::dim()).scale(0.0));
+        }
+        let xb = eta.scale(b);
+        Some(
+            T::dtau_left(&xb)
+                .transpose()
+                .compose(&T::tau(&xb).adjoint().transpose())
+                .scale(b),
+        )
+    }
+    /// `ḡ = g_k τ(θη)`: `ḡ⁻¹ ∂ḡ/∂η = θ d^Lτ_{θη}`.
+    fn base_point_derivative(&self, eta: &G::Algebra) -> Option<G::Operator> {
+        let th = self.theta();
+        Some(T::dtau_left(&eta.scale(th)).scale(th))
     }
 
     /// `ξ_k = Ad_{τ(θη)} ξ − θ d^Lτ_{−θη} ζ`.

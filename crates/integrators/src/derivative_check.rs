@@ -161,6 +161,26 @@ pub fn check_derivatives<G: LieGroup, S: System<G>>(
     report
 }
 
+/// `K(g): ζ ↦ d/ds F(g exp(sζ))|_{s=0}`, `F = −T*_e L_g dV`, by central differences of the
+/// system's dV along `g exp(±dζ)` (2n evaluations, error ~1e-10 relative): the provided
+/// [`System::force_derivative`]; zero without a potential.
+pub fn finite_difference_force_derivative<G: LieGroup, S: System<G> + ?Sized>(
+    system: &S,
+    g: &G,
+) -> G::Operator {
+    let n = G::dim();
+    if !system.has_potential() {
+        return G::Operator::identity(n).scale(0.0);
+    }
+    let d = RELATIVE_STEP;
+    lie_groups::matrix_path::operator_from_column_fn::<G>(|j| {
+        let e = G::Algebra::basis(n, j);
+        let plus = system.potential_differential(&g.compose(&G::exp(&e.scale(d))));
+        let minus = system.potential_differential(&g.compose(&G::exp(&e.scale(-d))));
+        minus.sub(&plus).scale(0.5 / d)
+    })
+}
+
 /// `∂²h/∂μ²` by central differences of ∂h/∂μ (2n velocity evaluations, error ~1e-10 relative):
 /// the provided [`System::hessian`] for systems that do not give theirs.
 pub fn finite_difference_hessian<G: LieGroup, S: System<G> + ?Sized>(

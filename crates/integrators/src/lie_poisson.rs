@@ -312,10 +312,25 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ:
     /// `I − h H(μ̄) ∂μ̄/∂ξ` with the map's [`LiftedMap::base_momentum_derivative`] (exact without a
     /// potential where D τ is exact: exp on every group, Cayley on SO(3), SE(3), SE(2); exact up
-    /// to O(h²) otherwise; the force's derivative is dropped, see [`crate::solver`]).
+    /// to O(h²) otherwise), plus the potential's term [`Self::force_term`].
     fn jacobian(&self, h: f64, xi: &G::Algebra, ev: &Evaluation<G>) -> G::Operator {
-        let dbar = self.map.base_momentum_derivative(xi, &self.mu, &ev.up);
+        let mut dbar = self.map.base_momentum_derivative(xi, &self.mu, &ev.up);
+        if let Some(force) = self.force_term(h, xi) {
+            dbar = dbar.add(&force);
+        }
         G::Operator::identity(G::dim()).add(&self.system.hessian(&ev.bar).compose(&dbar).scale(-h))
+    }
+
+    /// The potential's part of `∂μ̄/∂ξ` through the impulse `ν = h F(ḡ(ξ))`:
+    /// `∂μ̄/∂ν · h K(ḡ) · ḡ⁻¹∂ḡ/∂ξ` with K the force's derivative along the group
+    /// ([`System::force_derivative`]) — `None` without a potential or g, or where the map does
+    /// not give its pieces. (An external force's own derivative is not included.)
+    fn force_term(&self, h: f64, xi: &G::Algebra) -> Option<G::Operator> {
+        let gk = self.g.as_ref().filter(|_| self.system.has_potential())?;
+        let dnu = self.map.base_momentum_impulse_derivative(xi)?;
+        let dg = self.map.base_point_derivative(xi)?;
+        let k = self.system.force_derivative(&self.map.base_point(gk, xi));
+        Some(dnu.compose(&k).compose(&dg).scale(h))
     }
 }
 

@@ -54,6 +54,15 @@ pub trait System<G: LieGroup> {
     fn potential_differential(&self, _g: &G) -> G::Algebra {
         G::Algebra::zeros(G::dim())
     }
+    /// The derivative of the force along the group, `K(g): ζ ↦ d/ds F(g exp(sζ))|_{s=0}` with
+    /// `F = −T*_e L_g dV` (minus the left-trivialized Hessian of V), for the Newton matrix of the
+    /// implicit steps. The provided form takes central differences of
+    /// [`System::potential_differential`] along `g exp(±dζ)` (2n evaluations, accurate to
+    /// ~1e-10 relative; [`crate::derivative_check::finite_difference_force_derivative`]); a
+    /// system may give the closed form. Zero without a potential.
+    fn force_derivative(&self, g: &G) -> G::Operator {
+        crate::derivative_check::finite_difference_force_derivative(self, g)
+    }
     /// Whether an external (non-conservative) force `F_ext(t, g, ξ)` acts on the system (see
     /// [`crate::forces`]); integrators then apply it in the discrete Lagrange–d'Alembert way.
     fn is_forced(&self) -> bool {
