@@ -12,6 +12,14 @@ use thiserror::Error;
 /// of a local map (log, τ⁻¹, a tangent-map inverse).
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 pub enum LieError {
+    /// A finite argument whose image overflows (`LieGroup::try_exp`, `CayleyGroup::try_cay`).
+    #[error("{map} of a finite argument overflowed: the argument (size {size:.3e}) is too large for this group's formulas")]
+    Overflow {
+        /// The map, e.g. `exp`.
+        map: &'static str,
+        /// The argument's largest entry.
+        size: f64,
+    },
     /// A matrix or vector holds NaN or an infinity.
     #[error("non-finite input: {what} contains NaN or an infinity")]
     NonFinite {

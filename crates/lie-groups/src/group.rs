@@ -33,8 +33,29 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
     fn compose(&self, other: &Self) -> Self;
     /// The inverse `g⁻¹`.
     fn inverse(&self) -> Self;
-    /// The group exponential exp: 𝔤 → G.
+    /// The group exponential exp: 𝔤 → G. Infallible: a non-finite ξ gives a non-finite element,
+    /// and so does a finite ξ so large that the group's formulas overflow (SE(3)'s translation
+    /// `V(ω) v` beyond f64::MAX, GL(n)'s entries; SO(3) stays a rotation for every finite ξ).
+    /// [`LieGroup::try_exp`] turns both into errors.
     fn exp(xi: &Self::Algebra) -> Self;
+    /// `exp` checked: [`LieError::NonFinite`] for a ξ holding NaN or an infinity,
+    /// [`LieError::Overflow`] when a finite ξ gives a non-finite element.
+    fn try_exp(xi: &Self::Algebra) -> Result<Self, LieError> {
+        if !xi.is_finite() {
+            return Err(LieError::NonFinite {
+                what: "algebra element ξ",
+            });
+        }
+        let g = Self::exp(xi);
+        if g.is_finite() {
+            Ok(g)
+        } else {
+            Err(LieError::Overflow {
+                map: "exp",
+                size: xi.norm_max(),
+            })
+        }
+    }
     /// The principal logarithm, the local inverse of `exp` (an error where none exists).
     fn log(&self) -> Result<Self::Algebra, LieError>;
     /// A radius r such that `log(exp ξ) = ξ` holds to round-off (relative error ≤ 1e-8) for every

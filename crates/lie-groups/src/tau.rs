@@ -139,8 +139,27 @@ impl<G: LieGroup> Tau<G> for ExpMap {
 /// `(d^L cay_ξ)⁻¹ (η) = η̂ + [ξ̂, η̂]/2 − ξ̂ η̂ ξ̂/4`; groups implement closed forms in coordinates
 /// and [`crate::matrix_path`] gives the generic matrix evaluation they are tested against.
 pub trait CayleyGroup: LieGroup {
-    /// cay(ξ).
+    /// cay(ξ). Infallible like [`LieGroup::exp`]: non-finite for a non-finite ξ (or where
+    /// `I − ξ̂/2` is singular, which no skew ξ makes); [`CayleyGroup::try_cay`] checks.
     fn cay(xi: &Self::Algebra) -> Self;
+    /// `cay` checked: [`LieError::NonFinite`] for a ξ holding NaN or an infinity,
+    /// [`LieError::Overflow`] when a finite ξ gives a non-finite element.
+    fn try_cay(xi: &Self::Algebra) -> Result<Self, LieError> {
+        if !xi.is_finite() {
+            return Err(LieError::NonFinite {
+                what: "algebra element ξ",
+            });
+        }
+        let g = Self::cay(xi);
+        if g.is_finite() {
+            Ok(g)
+        } else {
+            Err(LieError::Overflow {
+                map: "cay",
+                size: xi.norm_max(),
+            })
+        }
+    }
     /// cay⁻¹(g) = 2 (g − I)(g + I)⁻¹ read back through `vee`; an error where g + I is singular.
     fn cay_inv(&self) -> Result<Self::Algebra, LieError>;
     /// A radius r such that `cay⁻¹(cay ξ) = ξ` holds to round-off (relative error ≤ 1e-8) for

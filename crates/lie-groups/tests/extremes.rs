@@ -687,3 +687,35 @@ fn so3_exp_and_cayley_of_huge_vectors_are_rotations_about_the_axis() {
     }
     assert!(!So3::exp(&Vector3::new(f64::NAN, 0.0, 0.0)).is_finite());
 }
+
+/// try_exp / try_cay: a non-finite ξ is `NonFinite`, a finite ξ whose image overflows is
+/// `Overflow` (SE(3)'s translation beyond f64::MAX, GL(2)'s e^800), and elsewhere they are exp and
+/// cay themselves (SO(3) at |ω| = 1e300 included: a rotation).
+#[test]
+fn try_exp_and_try_cay_turn_non_finite_results_into_errors() {
+    use lie_groups::GlN;
+    use nalgebra::Vector6;
+    let nan = Vector3::new(f64::NAN, 0.0, 0.0);
+    assert!(matches!(So3::try_exp(&nan), Err(LieError::NonFinite { .. })));
+    assert!(matches!(So3::try_cay(&nan), Err(LieError::NonFinite { .. })));
+    let inf = Vector6::new(0.0, 0.0, 0.0, f64::INFINITY, 0.0, 0.0);
+    assert!(matches!(Se3::try_exp(&inf), Err(LieError::NonFinite { .. })));
+    let w = Vector3::new(0.3, -0.5, 0.8);
+    assert_eq!(So3::try_exp(&w).unwrap(), So3::exp(&w));
+    assert_eq!(So3::try_cay(&w).unwrap(), So3::cay(&w));
+    let huge = w * 1e300;
+    assert!(So3::try_exp(&huge).unwrap().is_finite());
+    let far = Vector6::new(0.0, 0.0, 2.0, f64::MAX, f64::MAX, 0.0);
+    assert!(!Se3::exp(&far).is_finite());
+    assert!(matches!(
+        Se3::try_exp(&far),
+        Err(LieError::Overflow { map: "exp", .. })
+    ));
+    let big = faer::col::Col::from_fn(4, |i| if i == 0 { 800.0 } else { 0.0 });
+    assert!(matches!(
+        GlN::<2>::try_exp(&big),
+        Err(LieError::Overflow { map: "exp", .. })
+    ));
+    let msg = GlN::<2>::try_exp(&big).unwrap_err().to_string();
+    assert!(msg.contains("exp") && msg.contains("overflow"), "{msg}");
+}
