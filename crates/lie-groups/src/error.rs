@@ -8,6 +8,24 @@
 
 use thiserror::Error;
 
+/// A map 𝔤 → G named in [`LieError::Overflow`] (one byte, so the error stays 24 bytes).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GroupMap {
+    /// The group exponential.
+    Exp,
+    /// The Cayley map.
+    Cay,
+}
+
+impl core::fmt::Display for GroupMap {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            GroupMap::Exp => "exp",
+            GroupMap::Cay => "cay",
+        })
+    }
+}
+
 /// What can go wrong in `lie-groups`: input that is not on the group, or a point outside the domain
 /// of a local map (log, τ⁻¹, a tangent-map inverse).
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
@@ -15,8 +33,8 @@ pub enum LieError {
     /// A finite argument whose image overflows (`LieGroup::try_exp`, `CayleyGroup::try_cay`).
     #[error("{map} of a finite argument overflowed: the argument (size {size:.3e}) is too large for this group's formulas")]
     Overflow {
-        /// The map, e.g. `exp`.
-        map: &'static str,
+        /// The map that overflowed.
+        map: GroupMap,
         /// The argument's largest entry.
         size: f64,
     },

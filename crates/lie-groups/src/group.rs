@@ -51,7 +51,7 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
             Ok(g)
         } else {
             Err(LieError::Overflow {
-                map: "exp",
+                map: crate::GroupMap::Exp,
                 size: xi.norm_max(),
             })
         }

@@ -91,7 +91,7 @@ mod vector;
 #[cfg(feature = "testing")]
 pub mod testing;
 
-pub use error::{DomainReason, LieError, StructureCheck};
+pub use error::{DomainReason, GroupMap, LieError, StructureCheck};
 pub use group::{
     dexp_dual_derivative_series, nan_operator, Action, LieGroup, DEXP_DERIVATIVE_MAX_TERMS,
 };

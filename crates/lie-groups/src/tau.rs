@@ -155,7 +155,7 @@ pub trait CayleyGroup: LieGroup {
             Ok(g)
         } else {
             Err(LieError::Overflow {
-                map: "cay",
+                map: crate::GroupMap::Cay,
                 size: xi.norm_max(),
             })
         }
