@@ -6,7 +6,9 @@
 //! (`lie_groups::matrix_path`, Padé / LU on the matrix representation), nalgebra's own geometry.
 
 use lie_groups::testing::{assert_small, expm_taylor};
-use lie_groups::{matrix_path, Action, CayleyGroup, DenseMatrix, GroupMap, LieError, LieGroup, Se3, So3};
+use lie_groups::{
+    matrix_path, Action, CayleyGroup, DenseMatrix, GroupMap, LieError, LieGroup, Se3, So3,
+};
 use nalgebra::{
     Isometry3, Matrix3, Matrix4, Matrix6, Point3, Quaternion, Rotation3, SMatrix, SVector,
     UnitQuaternion, Vector3, Vector6,
@@ -696,10 +698,19 @@ fn try_exp_and_try_cay_turn_non_finite_results_into_errors() {
     use lie_groups::GlN;
     use nalgebra::Vector6;
     let nan = Vector3::new(f64::NAN, 0.0, 0.0);
-    assert!(matches!(So3::try_exp(&nan), Err(LieError::NonFinite { .. })));
-    assert!(matches!(So3::try_cay(&nan), Err(LieError::NonFinite { .. })));
+    assert!(matches!(
+        So3::try_exp(&nan),
+        Err(LieError::NonFinite { .. })
+    ));
+    assert!(matches!(
+        So3::try_cay(&nan),
+        Err(LieError::NonFinite { .. })
+    ));
     let inf = Vector6::new(0.0, 0.0, 0.0, f64::INFINITY, 0.0, 0.0);
-    assert!(matches!(Se3::try_exp(&inf), Err(LieError::NonFinite { .. })));
+    assert!(matches!(
+        Se3::try_exp(&inf),
+        Err(LieError::NonFinite { .. })
+    ));
     let w = Vector3::new(0.3, -0.5, 0.8);
     assert_eq!(So3::try_exp(&w).unwrap(), So3::exp(&w));
     assert_eq!(So3::try_cay(&w).unwrap(), So3::cay(&w));
@@ -709,12 +720,18 @@ fn try_exp_and_try_cay_turn_non_finite_results_into_errors() {
     assert!(!Se3::exp(&far).is_finite());
     assert!(matches!(
         Se3::try_exp(&far),
-        Err(LieError::Overflow { map: GroupMap::Exp, .. })
+        Err(LieError::Overflow {
+            map: GroupMap::Exp,
+            ..
+        })
     ));
     let big = faer::col::Col::from_fn(4, |i| if i == 0 { 800.0 } else { 0.0 });
     assert!(matches!(
         GlN::<2>::try_exp(&big),
-        Err(LieError::Overflow { map: GroupMap::Exp, .. })
+        Err(LieError::Overflow {
+            map: GroupMap::Exp,
+            ..
+        })
     ));
     let msg = GlN::<2>::try_exp(&big).unwrap_err().to_string();
     assert!(msg.contains("exp") && msg.contains("overflow"), "{msg}");

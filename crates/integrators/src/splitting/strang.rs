@@ -17,7 +17,7 @@ use lie_groups::{LieGroup, Vector};
 ///
 /// (applied right to left; `V_t: μ ↦ μ + t F(g)` is the kick, present only with a potential or an
 /// external force: [`crate::forces::Forced`] systems are split too, the force joining the kick at the
-/// kick's time — t_k first, t_k + h last — by [`kick`](super::kick) rules: exact for forces of
+/// kick's time — t_k first, t_k + h last — by the kick rules (`splitting/kick.rs`): exact for forces of
 /// (t, g), the implicit midpoint rule for forces that read ξ, so the step stays symmetric and of
 /// order 2).
 /// Order 2, symmetric (Ψ_{−h} = Ψ_h⁻¹: the sequence is a palindrome of exact flows), explicit, and
