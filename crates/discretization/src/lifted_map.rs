@@ -112,6 +112,20 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
         mu_k: &G::Algebra,
         mu_next: &G::Algebra,
     ) -> G::Algebra;
+    /// The base momentum μ̄ of a trial η straight from μ_k and the impulse ν:
+    /// `base_momentum(η, μ_k, momentum_update(η, μ_k, ν).next)` up to round-off, the quantity
+    /// every residual of a cotangent-lift step needs. The provided form is exactly that
+    /// composition; maps override it where μ̄ is cheaper to form without μ_{k+1} (the left map
+    /// by `d^{L*}τ_ζ Ad*_{τ(ζ)} = d^{L*}τ_{−ζ}`), so that a step forms μ_{k+1} once, at the
+    /// solution.
+    fn base_momentum_from_impulse(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        self.base_momentum(eta, mu_k, &self.momentum_update(eta, mu_k, nu).next)
+    }
     /// `∂μ̄/∂η` along [`Self::momentum_update`] with ν held fixed.
     fn base_momentum_derivative(
         &self,
@@ -175,10 +189,11 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
         T::compose_tau_split(gk, self.theta(), eta)
     }
-    /// `τ⁻¹(τ(η)) = η` to `1e-8 (1 + ‖η‖)`; skipped inside `Tau::INVERTIBLE_RADIUS`.
+    /// `τ⁻¹(τ(η)) = η` to `1e-8 (1 + ‖η‖)`; skipped inside `Tau::INVERTIBLE_RADIUS` (compared
+    /// squared: no square root on the step's path).
     #[inline]
     fn check_domain(&self, eta: &G::Algebra) -> Result<(), DiscretizationError> {
-        if eta.norm() <= T::INVERTIBLE_RADIUS {
+        if eta.dot(eta) <= T::INVERTIBLE_RADIUS * T::INVERTIBLE_RADIUS {
             Ok(())
         } else {
             tau_round_trip::<G, T>(eta)
@@ -190,7 +205,7 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     /// ζ), `Δ = δ_{θη}(μ_k) + ν` and `μ_{k+1} − μ_k = Δ + δ_{(1−θ)η}(μ_k) + δ_{(1−θ)η}(Δ)`: μ_k
     /// enters once, so |μ|² follows a random walk of roundings instead of drifting with the
     /// rounding of τ's entries `1 − O(|η|²)` at small steps. τ itself is not formed.
-    #[inline]
+    #[inline(always)]
     fn momentum_update(
         &self,
         eta: &G::Algebra,
@@ -199,6 +214,15 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     ) -> MomentumUpdate<G::Algebra> {
         let th = self.theta();
         let xa = eta.scale(th);
+        if th == 0.0 && nu.is_none() {
+            // Δ = 0: μ_{k+1} − μ_k = δ_η(μ_k) alone.
+            let increment = T::tau_coadjoint_increment(eta, mu_k);
+            return MomentumUpdate {
+                transported: mu_k.clone(),
+                next: mu_k.add(&increment),
+                increment,
+            };
+        }
         let carried = if th == 0.0 {
             G::Algebra::zeros(G::dim())
         } else {
@@ -240,6 +264,46 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             bar = bar.axpy(th, &T::dtau_left_dual_apply(&eta.scale(-th), mu_k));
         }
         bar
+    }
+
+    /// `μ̄ = θ d^{L*}τ_{−θη} μ_k + (1−θ) d^{L*}τ_{−(1−θ)η} (Ad*_{τ(θη)} μ_k + ν)`: the second term
+    /// of [`LiftedMap::base_momentum`] with `μ_{k+1} = Ad*_{τ((1−θ)η)}(Ad*_{τ(θη)} μ_k + ν)` and
+    /// `d^{L*}τ_ζ Ad*_{τ(ζ)} = (Ad_{τ(ζ)} d^Lτ_ζ)ᵀ = (d^Rτ_ζ)ᵀ = d^{L*}τ_{−ζ}` (τ(ζ)⁻¹ = τ(−ζ)).
+    /// One coadjoint increment and one dual tangent for θ = ½ (both terms then share
+    /// `d^{L*}τ_{−η/2}`), one dual tangent for θ ∈ {0, 1}, against two of each through μ_{k+1}.
+    #[inline]
+    fn base_momentum_from_impulse(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        let th = self.theta();
+        let b = 1.0 - th;
+        if b == 0.0 {
+            // θ = 1: μ̄ = d^{L*}τ_{−η} μ_k (the impulse enters only μ_{k+1}).
+            return T::dtau_left_dual_apply(&eta.neg(), mu_k);
+        }
+        // x = Ad*_{τ(θη)} μ_k + ν
+        let xa = eta.scale(th);
+        let mut x = if th == 0.0 {
+            mu_k.clone()
+        } else {
+            mu_k.add(&T::tau_coadjoint_increment(&xa, mu_k))
+        };
+        if let Some(nu) = nu {
+            x = x.add(nu);
+        }
+        if th == 0.0 {
+            T::dtau_left_dual_apply(&eta.neg(), &x)
+        } else if th == b {
+            // ½ d^{L*}τ_{−η/2} (μ_k + x)
+            T::dtau_left_dual_apply(&xa.neg(), &mu_k.add(&x)).scale(0.5)
+        } else {
+            T::dtau_left_dual_apply(&eta.scale(-b), &x)
+                .scale(b)
+                .axpy(th, &T::dtau_left_dual_apply(&xa.neg(), mu_k))
+        }
     }
 
     /// With `M(μ) := (δ ↦ ad*_δ μ)` and `D(ζ; μ) := ∂/∂ζ (d^{L*}τ_ζ μ)`

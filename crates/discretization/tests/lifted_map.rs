@@ -40,6 +40,22 @@ fn check_cotangent_pieces<G: LieGroup, T: Tau<G>>(
     let up = m.momentum_update(eta, mu, Some(nu));
     let bar = m.base_momentum(eta, mu, &up.next);
     let s = 1.0 + eta.norm() + mu.norm() + nu.norm();
+    // μ̄ without μ_{k+1} (d^{L*}τ_ζ Ad*_{τ(ζ)} = d^{L*}τ_{−ζ}), with and without an impulse
+    assert_small(
+        "base_momentum_from_impulse = base_momentum through μ_{k+1}",
+        m.base_momentum_from_impulse(eta, mu, Some(nu))
+            .sub(&bar)
+            .norm_max(),
+        1e-13 * s,
+    );
+    let free = m.base_momentum(eta, mu, &m.momentum_update(eta, mu, None).next);
+    assert_small(
+        "base_momentum_from_impulse without ν",
+        m.base_momentum_from_impulse(eta, mu, None)
+            .sub(&free)
+            .norm_max(),
+        1e-13 * s,
+    );
     // the transported momentum, from the matrix of τ
     let plain = T::tau(&eta.scale(theta)).coadjoint_apply(mu);
     assert_small(

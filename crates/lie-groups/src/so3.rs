@@ -715,8 +715,10 @@ impl LieGroup for So3 {
         d
     }
     #[inline]
+    #[allow(clippy::eq_op)] // x − x is the point: 0 for finite x, NaN for NaN and ±∞
     fn is_finite(&self) -> bool {
-        self.r.iter().all(|x| x.is_finite())
+        // Branch-free: x − x is 0 for finite x, NaN otherwise.
+        self.r.iter().fold(0.0, |s, x| s + (x - x)) == 0.0
     }
     #[inline]
     fn matrix_distance(&self, other: &Self) -> f64 {
@@ -761,6 +763,10 @@ impl CayleyGroup for So3 {
     /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products.
     #[inline]
     fn cay_split_compose(g: &Self, theta: f64, w: &Vector3<f64>) -> Self {
+        if theta == 0.0 || theta == 1.0 {
+            // One factor is cay(0) = I (bitwise the formula below, whose denominator is then 1).
+            return Self::cay_compose(g, w);
+        }
         let den = 1.0 - theta * (1.0 - theta) * w.norm_squared() * 0.25;
         if den >= 0.5 {
             Self::cay_compose(g, &(w / den))

@@ -70,9 +70,15 @@ impl RigidBody {
     pub fn inertia(&self) -> &Matrix3<f64> {
         self.inner.inertia()
     }
-    /// The angular velocity Ω = 𝕀⁻¹Π.
+    /// The angular velocity Ω = 𝕀⁻¹Π: `Πᵢ/Iᵢ` for a diagonal 𝕀 (three products, what a
+    /// hand-written step does, and each entry rounded once), else the product with 𝕀⁻¹.
+    #[inline]
     pub fn angular_velocity(&self, pi: &Vector3<f64>) -> Vector3<f64> {
-        self.inner.inertia_inv() * pi
+        if self.diagonal {
+            pi.component_mul(&self.inv_moments)
+        } else {
+            self.inner.inertia_inv() * pi
+        }
     }
     /// Euler's equations `Π̇ = Π × Ω`.
     pub fn euler_rhs(&self, pi: &Vector3<f64>) -> Vector3<f64> {
@@ -81,15 +87,15 @@ impl RigidBody {
 }
 
 impl System<So3> for RigidBody {
-    /// `h(Π) = ½ Π·𝕀⁻¹Π`.
+    /// `h(Π) = ½ Π·𝕀⁻¹Π` (= ½ Π·Ω with Ω from [`RigidBody::angular_velocity`]).
     #[inline]
     fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
-        self.inner.hamiltonian(mu)
+        0.5 * mu.dot(&self.angular_velocity(mu))
     }
-    /// Ω = 𝕀⁻¹Π.
+    /// Ω = 𝕀⁻¹Π ([`RigidBody::angular_velocity`]).
     #[inline]
     fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
-        self.inner.velocity(mu)
+        self.angular_velocity(mu)
     }
     /// 𝕀⁻¹.
     #[inline]
