@@ -105,6 +105,18 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
         mu_k: &G::Algebra,
         nu: Option<&G::Algebra>,
     ) -> MomentumUpdate<G::Algebra>;
+    /// `μ_{k+1} − μ_k` of [`Self::momentum_update`] alone, what a step adds to μ_k at its
+    /// solution; maps override it where the increment is cheaper without the other parts (the
+    /// left map without an impulse: `Tau::tau_split_coadjoint_increment`, one increment for exp
+    /// and for Cayley on SO(3)).
+    fn momentum_increment(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        self.momentum_update(eta, mu_k, nu).increment
+    }
     /// The μ-component of `(R̃_d^{T*})⁻¹((g_k, μ_k), (g_{k+1}, μ_{k+1}))`: the base momentum μ̄.
     fn base_momentum(
         &self,
@@ -246,6 +258,21 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             transported,
             next: mu_k.add(&increment),
             increment,
+        }
+    }
+
+    /// Without an impulse, `μ_{k+1} = Ad*_{τ(θη)τ((1−θ)η)} μ_k`: one
+    /// `Tau::tau_split_coadjoint_increment` (the two factors in one where τ allows it).
+    #[inline(always)]
+    fn momentum_increment(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        match nu {
+            None => T::tau_split_coadjoint_increment(self.theta(), eta, mu_k),
+            Some(_) => self.momentum_update(eta, mu_k, nu).increment,
         }
     }
 

@@ -378,10 +378,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
             Some(ev) => ev.impulse,
             None => self.impulse(h, &xi),
         };
-        let dmu = self
-            .map
-            .momentum_update(&xi, &self.mu, impulse.as_ref())
-            .increment;
+        let dmu = self.map.momentum_increment(&xi, &self.mu, impulse.as_ref());
         // μ_{k+1} = μ_k + (Δμ + carried error), by TwoSum (Knuth): the new rounding error is kept
         // exactly for the next step (compensated summation, Vilmart 2008).
         let (a, b) = (&self.mu, dmu.add(&self.mu_err));

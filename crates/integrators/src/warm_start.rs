@@ -105,7 +105,7 @@ impl<G: LieGroup> WarmStart<G> {
 
     /// The quartic extrapolation `5ξ₁ − 10ξ₂ + 10ξ₃ − 5ξ₄ + ξ₅` of the last five solutions, when
     /// the last five steps had size h.
-    #[inline]
+    #[inline(always)]
     pub fn predict(&self, h: f64) -> Option<G::Algebra> {
         if !self.holds(h) || self.count < DEPTH {
             return None;
