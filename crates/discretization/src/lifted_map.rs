@@ -296,8 +296,9 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     /// `μ̄ = θ d^{L*}τ_{−θη} μ_k + (1−θ) d^{L*}τ_{−(1−θ)η} (Ad*_{τ(θη)} μ_k + ν)`: the second term
     /// of [`LiftedMap::base_momentum`] with `μ_{k+1} = Ad*_{τ((1−θ)η)}(Ad*_{τ(θη)} μ_k + ν)` and
     /// `d^{L*}τ_ζ Ad*_{τ(ζ)} = (Ad_{τ(ζ)} d^Lτ_ζ)ᵀ = (d^Rτ_ζ)ᵀ = d^{L*}τ_{−ζ}` (τ(ζ)⁻¹ = τ(−ζ)).
-    /// One coadjoint increment and one dual tangent for θ = ½ (both terms then share
-    /// `d^{L*}τ_{−η/2}`), one dual tangent for θ ∈ {0, 1}, against two of each through μ_{k+1}.
+    /// For θ = ½ both terms share `d^{L*}τ_{−η/2}`: `Tau::midpoint_base_momentum` (one coadjoint
+    /// increment and one dual tangent, or a closed form), one dual tangent for θ ∈ {0, 1},
+    /// against two of each through μ_{k+1}.
     #[inline]
     fn base_momentum_from_impulse(
         &self,
@@ -311,6 +312,16 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             // θ = 1: μ̄ = d^{L*}τ_{−η} μ_k (the impulse enters only μ_{k+1}).
             return T::dtau_left_dual_apply(&eta.neg(), mu_k);
         }
+        if th == b {
+            // θ = ½: ½ d^{L*}τ_{−η/2}(μ_k + Ad*_{τ(η/2)} μ_k) fused (Tau::midpoint_base_momentum),
+            // plus ½ d^{L*}τ_{−η/2} ν.
+            let a = eta.scale(0.5);
+            let bar = T::midpoint_base_momentum(&a, mu_k);
+            return match nu {
+                None => bar,
+                Some(nu) => bar.axpy(0.5, &T::dtau_left_dual_apply(&a.neg(), nu)),
+            };
+        }
         // x = Ad*_{τ(θη)} μ_k + ν
         let xa = eta.scale(th);
         let mut x = if th == 0.0 {
@@ -323,9 +334,6 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
         }
         if th == 0.0 {
             T::dtau_left_dual_apply(&eta.neg(), &x)
-        } else if th == b {
-            // ½ d^{L*}τ_{−η/2} (μ_k + x)
-            T::dtau_left_dual_apply(&xa.neg(), &mu_k.add(&x)).scale(0.5)
         } else {
             T::dtau_left_dual_apply(&eta.scale(-b), &x)
                 .scale(b)

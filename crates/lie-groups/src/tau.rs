@@ -71,6 +71,14 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     fn tau_split_coadjoint_increment(theta: f64, xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         split_increment_of_factors::<G, Self>(theta, xi, mu)
     }
+    /// `½ d^{L*}τ_{−a} (μ + Ad*_{τ(a)} μ)`, the base momentum of the midpoint (θ = ½) map with
+    /// a = η/2 and no impulse (see `discretization`'s `LiftedMap::base_momentum_from_impulse`).
+    /// The provided form is that composition (one coadjoint increment, one dual tangent);
+    /// Cayley on SO(3) has the closed form `Ad*_{cay(a)} μ / (1 + |a|²/4)` (one division).
+    fn midpoint_base_momentum(a: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        let x = mu.add(mu).add(&Self::tau_coadjoint_increment(a, mu));
+        Self::dtau_left_dual_apply(&a.neg(), &x).scale(0.5)
+    }
     /// `d^{L*} τ_ξ μ = (d^L τ_ξ)ᵀ μ`.
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         Self::dtau_left(xi).apply_transpose(mu)
@@ -228,6 +236,12 @@ pub trait CayleyGroup: LieGroup {
     ) -> Self::Algebra {
         split_increment_of_factors::<Self, Cayley>(theta, xi, mu)
     }
+    /// `½ d^{L*}cay_{−a} (μ + Ad*_{cay(a)} μ)` ([`Tau::midpoint_base_momentum`]); the provided
+    /// form composes the two maps, SO(3) has a closed form.
+    fn cay_midpoint_base_momentum(a: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
+        let x = mu.add(mu).add(&Self::cay_coadjoint_increment(a, mu));
+        Self::dcay_left_dual_apply(&a.neg(), &x).scale(0.5)
+    }
     /// `d^{L*}cay_ξ μ = (d^L cay_ξ)ᵀ μ`. The provided form builds d^L cay_ξ; groups override it
     /// with a closed form that skips the operator.
     fn dcay_left_dual_apply(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
@@ -281,6 +295,10 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     #[inline]
     fn tau_split_coadjoint_increment(theta: f64, xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         G::cay_split_coadjoint_increment(theta, xi, mu)
+    }
+    #[inline]
+    fn midpoint_base_momentum(a: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::cay_midpoint_base_momentum(a, mu)
     }
     #[inline]
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
