@@ -789,6 +789,10 @@ impl CayleyGroup for So3 {
         w: &Vector3<f64>,
         mu: &Vector3<f64>,
     ) -> Vector3<f64> {
+        if theta == 0.0 || theta == 1.0 {
+            // One factor is cay(0) = I (the formula below divides by den = 1).
+            return Self::cay_coadjoint_increment(w, mu);
+        }
         let den = 1.0 - theta * (1.0 - theta) * w.norm_squared() * 0.25;
         if den >= 0.5 {
             Self::cay_coadjoint_increment(&(w / den), mu)
