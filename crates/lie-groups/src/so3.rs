@@ -127,6 +127,23 @@ fn coadjoint_increment(w: &Vector3<f64>, mu: &Vector3<f64>, a: f64, b: f64) -> V
     w.cross(&wm) * b - wm * a
 }
 
+/// `(A, B)` with `cay(ω/den) − I = A ω̂ + B ω̂²`, den = 1 − θ(1−θ)|ω|²/4 (the one element
+/// cay(θω)cay((1−θ)ω)), while den ≥ ½; `None` beyond. With ω' = ω/den the Cayley coefficients
+/// `a = 4/(4 + |ω'|²)`, b = a/2 scale to `A = a/den = 4 den q`, `B = b/den² = 2q`,
+/// `q = 1/(4 den² + |ω|²)`: one division and no division of ω (at θ ∈ {0, 1}, den = 1 and these are
+/// cay's own 4/(4 + |ω|²), 2/(4 + |ω|²)).
+#[inline(always)]
+fn cay_split_coeffs(theta: f64, w: &Vector3<f64>) -> Option<(f64, f64)> {
+    let t2 = w.norm_squared();
+    let den = 1.0 - theta * (1.0 - theta) * t2 * 0.25;
+    if den >= 0.5 {
+        let q = 1.0 / (4.0 * den * den + t2);
+        Some((4.0 * den * q, 2.0 * q))
+    } else {
+        None
+    }
+}
+
 /// The 3×3 product, unrolled and always inlined (nalgebra's generic product was left out of line
 /// on the integrators' step, ~70 instructions with the call).
 #[inline(always)]
@@ -767,37 +784,30 @@ impl CayleyGroup for So3 {
     /// `R cay(θω) cay((1−θ)ω) = R cay(ω / (1 − θ(1−θ)|ω|²/4))`: cay(ω) is the rotation with Gibbs
     /// vector ω/2, and Gibbs vectors compose as `(a + b + a × b)/(1 − a·b)` (the cross term
     /// vanishing for parallel ones). Used while the denominator is at least ½ (a total angle up to
-    /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products.
+    /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products. The
+    /// coefficients of `cay(ω/den) − I = A ω̂ + B ω̂²` come from [`cay_split_coeffs`] (one
+    /// division, shared with [`CayleyGroup::cay_split_coadjoint_increment`] of the same step).
     #[inline]
     fn cay_split_compose(g: &Self, theta: f64, w: &Vector3<f64>) -> Self {
-        if theta == 0.0 || theta == 1.0 {
-            // One factor is cay(0) = I (bitwise the formula below, whose denominator is then 1).
-            return Self::cay_compose(g, w);
-        }
-        let den = 1.0 - theta * (1.0 - theta) * w.norm_squared() * 0.25;
-        if den >= 0.5 {
-            Self::cay_compose(g, &(w / den))
-        } else {
-            Self::cay_compose(&Self::cay_compose(g, &(w * theta)), &(w * (1.0 - theta)))
+        match cay_split_coeffs(theta, w) {
+            Some((a, b)) => Self {
+                r: g.r + mul3(&g.r, &rodrigues_increment(w, a, b)),
+            },
+            None => Self::cay_compose(&Self::cay_compose(g, &(w * theta)), &(w * (1.0 - theta))),
         }
     }
     /// `(Ad*_{cay((1−θ)ω)} Ad*_{cay(θω)} − I) μ = (Ad*_{cay(ω/den)} − I) μ`,
-    /// den = 1 − θ(1−θ)|ω|²/4, as [`CayleyGroup::cay_split_compose`] (and on the same switch).
+    /// den = 1 − θ(1−θ)|ω|²/4, as [`CayleyGroup::cay_split_compose`] (and on the same switch, with
+    /// the same coefficients).
     #[inline]
     fn cay_split_coadjoint_increment(
         theta: f64,
         w: &Vector3<f64>,
         mu: &Vector3<f64>,
     ) -> Vector3<f64> {
-        if theta == 0.0 || theta == 1.0 {
-            // One factor is cay(0) = I (the formula below divides by den = 1).
-            return Self::cay_coadjoint_increment(w, mu);
-        }
-        let den = 1.0 - theta * (1.0 - theta) * w.norm_squared() * 0.25;
-        if den >= 0.5 {
-            Self::cay_coadjoint_increment(&(w / den), mu)
-        } else {
-            crate::tau::split_increment_of_factors::<Self, crate::Cayley>(theta, w, mu)
+        match cay_split_coeffs(theta, w) {
+            Some((a, b)) => coadjoint_increment(w, mu, a, b),
+            None => crate::tau::split_increment_of_factors::<Self, crate::Cayley>(theta, w, mu),
         }
     }
     /// `½ d^{L*}cay_{−a}(μ + Ad*_{cay a} μ) = c (μ + δ_a μ)`, c = 4/(4 + |a|²), δ_a = Ad*_{cay a} − I:
