@@ -324,6 +324,24 @@ impl So3 {
         &self.r
     }
 
+    /// `R ← R exp(α êᵢ)` in place, from `(sin α, cos α)`: the rotation about the body axis eᵢ
+    /// turns columns j = i+1 and k = i+2 (mod 3) of R, `(rⱼ, rₖ) ← (c rⱼ + s rₖ, c rₖ − s rⱼ)` —
+    /// 12 flops, R rounded once; the splittings' principal-axis flows. Panics if i > 2.
+    #[inline]
+    pub fn rotate_about_body_axis(&mut self, i: usize, sin: f64, cos: f64) {
+        let (j, k) = match i {
+            0 => (1, 2),
+            1 => (2, 0),
+            2 => (0, 1),
+            _ => panic!("So3::rotate_about_body_axis: axis {i} of 0, 1, 2"),
+        };
+        for row in 0..3 {
+            let (rj, rk) = (self.r[(row, j)], self.r[(row, k)]);
+            self.r[(row, j)] = cos * rj + sin * rk;
+            self.r[(row, k)] = cos * rk - sin * rj;
+        }
+    }
+
     /// Checked constructor with an explicit tolerance: refuses non-finite entries
     /// ([`LieError::NonFinite`]), `‖RᵀR − I‖_max > tolerance` ([`LieError::NotOrthogonal`]) and
     /// `|det R − 1| > tolerance` ([`LieError::WrongDeterminant`], e.g. a reflection).
