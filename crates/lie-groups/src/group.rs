@@ -134,6 +134,15 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
     fn exp_coadjoint_increment(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
         Self::exp(xi).coadjoint_apply(mu).sub(mu)
     }
+    /// The increment `(Ad_{exp ξ} − I) v`, linear in v: the adjoint counterpart of
+    /// [`LieGroup::exp_coadjoint_increment`], what the Euler–Poincaré step adds to its velocity
+    /// (`discretization`'s `LiftedMap::first_velocity_increment`). The provided form is
+    /// `Ad_{exp ξ} v − v`, rounded at ε|v| however small ξ is; groups override it with a form
+    /// computed from ξ directly whose rounding is relative to its own size O(|ξ||v|) (SO(3),
+    /// SE(3), SE(2), and the composite groups factor by factor).
+    fn exp_adjoint_increment(xi: &Self::Algebra, v: &Self::Algebra) -> Self::Algebra {
+        Self::exp(xi).adjoint_apply(v).sub(v)
+    }
     /// `g exp ξ`. The provided form composes with exp ξ; groups override it with the increment
     /// form `g + g (exp ξ − I)` (see [`LieGroup::exp_coadjoint_increment`]).
     fn exp_compose(g: &Self, xi: &Self::Algebra) -> Self {

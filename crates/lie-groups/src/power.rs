@@ -314,6 +314,10 @@ impl<G: LieGroup, const N: usize> LieGroup for Power<G, N> {
         xi.zip(mu, |a, b| G::exp_coadjoint_increment(a, b))
     }
     #[inline]
+    fn exp_adjoint_increment(xi: &Alg<G, N>, v: &Alg<G, N>) -> Alg<G, N> {
+        xi.zip(v, |a, b| G::exp_adjoint_increment(a, b))
+    }
+    #[inline]
     fn exp_compose(g: &Self, xi: &Alg<G, N>) -> Self {
         Self::from_fn(|k| G::exp_compose(&g.parts[k], &xi.parts[k]))
     }
@@ -375,6 +379,10 @@ impl<G: CayleyGroup, const N: usize> CayleyGroup for Power<G, N> {
     #[inline]
     fn cay_coadjoint_increment(xi: &Alg<G, N>, mu: &Alg<G, N>) -> Alg<G, N> {
         xi.zip(mu, |a, b| G::cay_coadjoint_increment(a, b))
+    }
+    #[inline]
+    fn cay_adjoint_increment(xi: &Alg<G, N>, v: &Alg<G, N>) -> Alg<G, N> {
+        xi.zip(v, |a, b| G::cay_adjoint_increment(a, b))
     }
     #[inline]
     fn cay_compose(g: &Self, xi: &Alg<G, N>) -> Self {

@@ -362,6 +362,13 @@ impl<G: LieGroup, H: LieGroup> LieGroup for Product<G, H> {
         )
     }
     #[inline]
+    fn exp_adjoint_increment(xi: &Alg<G, H>, v: &Alg<G, H>) -> Alg<G, H> {
+        ProductAlgebra::new(
+            G::exp_adjoint_increment(&xi.a, &v.a),
+            H::exp_adjoint_increment(&xi.b, &v.b),
+        )
+    }
+    #[inline]
     fn exp_compose(g: &Self, xi: &Alg<G, H>) -> Self {
         Self::new(G::exp_compose(&g.g, &xi.a), H::exp_compose(&g.h, &xi.b))
     }
@@ -424,6 +431,13 @@ impl<G: CayleyGroup, H: CayleyGroup> CayleyGroup for Product<G, H> {
         ProductAlgebra::new(
             G::cay_coadjoint_increment(&xi.a, &mu.a),
             H::cay_coadjoint_increment(&xi.b, &mu.b),
+        )
+    }
+    #[inline]
+    fn cay_adjoint_increment(xi: &Alg<G, H>, v: &Alg<G, H>) -> Alg<G, H> {
+        ProductAlgebra::new(
+            G::cay_adjoint_increment(&xi.a, &v.a),
+            H::cay_adjoint_increment(&xi.b, &v.b),
         )
     }
     #[inline]

@@ -216,6 +216,11 @@ impl<const N: usize> LieGroup for Rn<N> {
     fn exp_coadjoint_increment(_xi: &SVector<f64, N>, _mu: &SVector<f64, N>) -> SVector<f64, N> {
         SVector::zeros()
     }
+    /// `(Ad_{exp ξ} − I) v = 0`.
+    #[inline]
+    fn exp_adjoint_increment(_xi: &SVector<f64, N>, _v: &SVector<f64, N>) -> SVector<f64, N> {
+        SVector::zeros()
+    }
     /// `x exp ξ = x + ξ`.
     #[inline]
     fn exp_compose(g: &Self, xi: &SVector<f64, N>) -> Self {
@@ -271,6 +276,11 @@ impl<const N: usize> CayleyGroup for Rn<N> {
     /// `(Ad*_{cay ξ} − I) μ = 0`.
     #[inline]
     fn cay_coadjoint_increment(_xi: &SVector<f64, N>, _mu: &SVector<f64, N>) -> SVector<f64, N> {
+        SVector::zeros()
+    }
+    /// `(Ad_{cay ξ} − I) v = 0`.
+    #[inline]
+    fn cay_adjoint_increment(_xi: &SVector<f64, N>, _v: &SVector<f64, N>) -> SVector<f64, N> {
         SVector::zeros()
     }
     /// `x cay ξ = x + ξ`.

@@ -80,6 +80,17 @@ fn j(v: &Vector2<f64>) -> Vector2<f64> {
     Vector2::new(-v.y, v.x)
 }
 
+/// `(Ad_{(R, t)} − I)(ω, v) = (0, (R − I) v − ω J t)` for `R − I = c I + s J` (from
+/// `Ad_g (ω, v) = (ω, R v − ω J t)`), computed without forming R: c = cos φ − 1 and s = sin φ,
+/// given in the forms of the τ map that keep their relative accuracy.
+#[inline]
+fn adjoint_increment_of(c: f64, s: f64, t: &Vector2<f64>, xi: &Vector3<f64>) -> Vector3<f64> {
+    let w = xi[0];
+    let v = Vector2::new(xi[1], xi[2]);
+    let d = v * c + j(&v) * s - j(t) * w;
+    Vector3::new(0.0, d.x, d.y)
+}
+
 impl Se2 {
     /// Default tolerance of [`LieGroup::from_matrix`] (as [`So2::TOLERANCE`]; the bottom row must be
     /// `[0, 0, 1]` within it too).
@@ -184,6 +195,17 @@ impl LieGroup for Se2 {
             So2::from_angle(w),
             Vector2::new(a * v.x - b * v.y, b * v.x + a * v.y),
         )
+    }
+    /// `(Ad_{exp(φ, ρ)} − I) ξ` with `cos φ − 1 = −φ² C`, `sin φ = φ A` and the translation
+    /// `t = A ρ + B J ρ` of [`LieGroup::exp`] (A = sin φ/φ, C = (1 − cos φ)/φ², B = φ C; Taylor
+    /// branches near 0).
+    #[inline]
+    fn exp_adjoint_increment(z: &Vector3<f64>, xi: &Vector3<f64>) -> Vector3<f64> {
+        let p = z[0];
+        let (a, c) = (fa(p), fc(p));
+        let rho = Vector2::new(z[1], z[2]);
+        let t = rho * a + j(&rho) * (p * c);
+        adjoint_increment_of(-(p * p) * c, p * a, &t, xi)
     }
     /// `log(R, t) = (θ, V(θ)⁻¹ t)` with θ ∈ (−π, π] from [`So2::angle`] and
     /// `V⁻¹ = [[α, θ/2], [−θ/2, α]]`, `α = (θ/2) cot(θ/2)`. At θ = π, α = 0: finite, no NaN, and the
@@ -312,6 +334,16 @@ impl CayleyGroup for Se2 {
             So2::cay(&nalgebra::Vector1::new(w)),
             Vector2::new(k * (vx - h * vy), k * (h * vx + vy)),
         )
+    }
+    /// `(Ad_{cay(φ, ρ)} − I) ξ` with `cay φ − 1 = k (−φ²/2 + φ J)` and `t = k (ρ + (φ/2) J ρ)`,
+    /// `k = 1/(1 + φ²/4)` (see [`CayleyGroup::cay`]).
+    #[inline]
+    fn cay_adjoint_increment(z: &Vector3<f64>, xi: &Vector3<f64>) -> Vector3<f64> {
+        let p = z[0];
+        let k = 1.0 / (1.0 + 0.25 * p * p);
+        let rho = Vector2::new(z[1], z[2]);
+        let t = (rho + j(&rho) * (0.5 * p)) * k;
+        adjoint_increment_of(-0.5 * k * (p * p), k * p, &t, xi)
     }
     /// `cay⁻¹(R, t) = (ω, [[1, ω/2], [−ω/2, 1]] t)` with `ω = 2 sin θ/(1 + cos θ)` (from
     /// `2(g − I)(g + I)⁻¹`, whose translation is `2(R + I)⁻¹ t`); an error at the half turn.

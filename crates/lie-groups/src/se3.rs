@@ -8,7 +8,8 @@
 //! (Barfoot and manif order (v, ω); their blocks appear here transposed across the diagonal.)
 
 use crate::so3::{
-    dexp_inv_coeff, rodrigues_apply, rodrigues_coeffs, rodrigues_matrix, sinc3, skew,
+    adjoint_increment, dexp_inv_coeff, rodrigues_apply, rodrigues_coeffs, rodrigues_matrix, sinc3,
+    skew,
 };
 use crate::{Action, CayleyGroup, LieError, LieGroup, So3};
 use nalgebra::{Matrix3, Matrix4, Matrix6, Vector3, Vector6};
@@ -38,6 +39,23 @@ fn tail(xi: &Vector6<f64>) -> Vector3<f64> {
 #[inline]
 fn join(w: &Vector3<f64>, v: &Vector3<f64>) -> Vector6<f64> {
     Vector6::new(w.x, w.y, w.z, v.x, v.y, v.z)
+}
+
+/// `(Ad_{(R, t)} − I)(ω, v) = ((R − I)ω, (R − I)v + t × (ω + (R − I)ω))` for `R − I = a φ̂ + b φ̂²`
+/// (from `Ad_g (ω, v) = (R ω, R v + t × R ω)`): every term O(|φ| + |t|) times |ξ|, computed
+/// without forming R.
+#[inline]
+fn adjoint_increment_of(
+    phi: &Vector3<f64>,
+    a: f64,
+    b: f64,
+    t: &Vector3<f64>,
+    xi: &Vector6<f64>,
+) -> Vector6<f64> {
+    let w = head(xi);
+    let dw = adjoint_increment(phi, &w, a, b);
+    let dv = adjoint_increment(phi, &tail(xi), a, b);
+    join(&dw, &(dv + t.cross(&(w + dw))))
 }
 
 /// The 6×6 matrix `[[a, b], [c, d]]` of 3×3 blocks.
@@ -244,6 +262,15 @@ impl LieGroup for Se3 {
             rodrigues_apply(&w, b, c, &tail(xi)),
         )
     }
+    /// `(Ad_{exp(φ, ρ)} − I) ξ` with `exp(φ, ρ) = (I + a φ̂ + b φ̂², V(φ) ρ)`, a = sin θ/θ,
+    /// b = (1 − cos θ)/θ², `V(φ) ρ = ρ + b φ × ρ + c φ × (φ × ρ)`, c = (θ − sin θ)/θ³ (the
+    /// coefficients of [`LieGroup::exp`]), from the closed form of `Ad_g`.
+    #[inline]
+    fn exp_adjoint_increment(z: &Vector6<f64>, xi: &Vector6<f64>) -> Vector6<f64> {
+        let phi = head(z);
+        let (a, b, c) = rodrigues_coeffs(phi.norm_squared());
+        adjoint_increment_of(&phi, a, b, &rodrigues_apply(&phi, b, c, &tail(z)), xi)
+    }
     /// `log(R, t) = (ω, V(ω)⁻¹ t)` with ω = log R (principal, |ω| ≤ π; see [`So3`]'s `log`) and
     /// `V(ω)⁻¹ = I − ω̂/2 + (1/θ² − (1 + cos θ)/(2θ sin θ)) ω̂²`, applied with cross products.
     #[inline]
@@ -376,6 +403,15 @@ impl CayleyGroup for Se3 {
         let k = skew(&w);
         let m_inv = Matrix3::identity() + (k * 2.0 + k * k) / (4.0 + w.norm_squared());
         Self::from_parts(So3::cay(&w), m_inv * tail(xi))
+    }
+    /// `(Ad_{cay(φ, ρ)} − I) ξ` with `cay(φ, ρ) = (I + a φ̂ + (a/2) φ̂², (I − φ̂/2)⁻¹ ρ)`,
+    /// a = 4/(4 + θ²), `(I − φ̂/2)⁻¹ ρ = ρ + (a/2) φ × ρ + (a/4) φ × (φ × ρ)`.
+    #[inline]
+    fn cay_adjoint_increment(z: &Vector6<f64>, xi: &Vector6<f64>) -> Vector6<f64> {
+        let phi = head(z);
+        let a = 4.0 / (4.0 + phi.norm_squared());
+        let t = rodrigues_apply(&phi, 0.5 * a, 0.25 * a, &tail(z));
+        adjoint_increment_of(&phi, a, 0.5 * a, &t, xi)
     }
     /// `cay⁻¹(R, t) = (ω, (I − ω̂/2) t)` with ω = cay⁻¹(R) (the blocks of `2(g − I)(g + I)⁻¹`);
     /// an error at half-turn rotations, where g + I is singular.

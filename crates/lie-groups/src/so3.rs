@@ -127,6 +127,19 @@ fn coadjoint_increment(w: &Vector3<f64>, mu: &Vector3<f64>, a: f64, b: f64) -> V
     w.cross(&wm) * b - wm * a
 }
 
+/// `(R − I)v` for `R = I + a ω̂ + b ω̂²`: `a ω × v + b ω × (ω × v)` (Ad_R = R), of size
+/// O(|ω||v|) and with its own relative accuracy; [`coadjoint_increment`] is the transpose.
+#[inline]
+pub(crate) fn adjoint_increment(
+    w: &Vector3<f64>,
+    v: &Vector3<f64>,
+    a: f64,
+    b: f64,
+) -> Vector3<f64> {
+    let wv = w.cross(v);
+    wv * a + w.cross(&wv) * b
+}
+
 /// `(A, B)` with `cay(ω/den) − I = A ω̂ + B ω̂²`, den = 1 − θ(1−θ)|ω|²/4 (the one element
 /// cay(θω)cay((1−θ)ω)), while den ≥ ½; `None` beyond. With ω' = ω/den the Cayley coefficients
 /// `a = 4/(4 + |ω'|²)`, b = a/2 scale to `A = a/den = 4 den q`, `B = b/den² = 2q`,
@@ -693,6 +706,13 @@ impl LieGroup for So3 {
         let (a, b) = exp_coeffs(w.norm_squared());
         coadjoint_increment(w, mu, a, b)
     }
+    /// `(Ad_{exp ω} − I) v = a ω × v + b ω × (ω × v)` (Ad_R = R; a, b as for
+    /// [`LieGroup::exp_coadjoint_increment`]), computed from ω.
+    #[inline]
+    fn exp_adjoint_increment(w: &Vector3<f64>, v: &Vector3<f64>) -> Vector3<f64> {
+        let (a, b) = exp_coeffs(w.norm_squared());
+        adjoint_increment(w, v, a, b)
+    }
     /// `R exp ω = R + R (a ω̂ + b ω̂²)`: the increment formed without the identity, R rounded once.
     #[inline]
     fn exp_compose(g: &Self, w: &Vector3<f64>) -> Self {
@@ -790,6 +810,12 @@ impl CayleyGroup for So3 {
     fn cay_coadjoint_increment(w: &Vector3<f64>, mu: &Vector3<f64>) -> Vector3<f64> {
         let a = 4.0 / (4.0 + w.norm_squared());
         coadjoint_increment(w, mu, a, 0.5 * a)
+    }
+    /// `(Ad_{cay ω} − I) v = a (ω × v) + (a/2) ω × (ω × v)`, a = 4/(4 + |ω|²).
+    #[inline]
+    fn cay_adjoint_increment(w: &Vector3<f64>, v: &Vector3<f64>) -> Vector3<f64> {
+        let a = 4.0 / (4.0 + w.norm_squared());
+        adjoint_increment(w, v, a, 0.5 * a)
     }
     /// `R cay ω = R + R (a ω̂ + (a/2) ω̂²)`, the increment form of [`LieGroup::exp_compose`].
     #[inline]

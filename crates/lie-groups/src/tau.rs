@@ -49,6 +49,15 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     fn tau_coadjoint_increment(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         Self::tau(xi).coadjoint_apply(mu).sub(mu)
     }
+    /// The increment `(Ad_{τ(ξ)} − I) v`, linear in v, the adjoint counterpart of
+    /// [`Tau::tau_coadjoint_increment`]: computed from ξ directly where the group has a closed
+    /// form ([`LieGroup::exp_adjoint_increment`], [`CayleyGroup::cay_adjoint_increment`]), so
+    /// that its rounding is relative to its size O(|ξ||v|); the provided form builds τ(ξ) and
+    /// rounds at ε|v|. (On SO(3), where Ad is orthogonal, `Ad_{τ(ξ)} = Ad*_{τ(−ξ)}` and this is
+    /// `tau_coadjoint_increment(−ξ, v)`; on SE(3) and SE(2) the two differ.)
+    fn tau_adjoint_increment(xi: &G::Algebra, v: &G::Algebra) -> G::Algebra {
+        Self::tau(xi).adjoint_apply(v).sub(v)
+    }
     /// `g τ(ξ)`, in the increment form `g + g (τ(ξ) − I)` where the group has one
     /// ([`LieGroup::exp_compose`]).
     fn compose_tau(g: &G, xi: &G::Algebra) -> G {
@@ -147,6 +156,10 @@ impl<G: LieGroup> Tau<G> for ExpMap {
         G::exp_coadjoint_increment(xi, mu)
     }
     #[inline]
+    fn tau_adjoint_increment(xi: &G::Algebra, v: &G::Algebra) -> G::Algebra {
+        G::exp_adjoint_increment(xi, v)
+    }
+    #[inline]
     fn compose_tau(g: &G, xi: &G::Algebra) -> G {
         G::exp_compose(g, xi)
     }
@@ -213,6 +226,10 @@ pub trait CayleyGroup: LieGroup {
     /// `(Ad*_{cay ξ} − I) μ`; groups override it as for [`LieGroup::exp_coadjoint_increment`].
     fn cay_coadjoint_increment(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
         Self::cay(xi).coadjoint_apply(mu).sub(mu)
+    }
+    /// `(Ad_{cay ξ} − I) v`; groups override it as for [`LieGroup::exp_adjoint_increment`].
+    fn cay_adjoint_increment(xi: &Self::Algebra, v: &Self::Algebra) -> Self::Algebra {
+        Self::cay(xi).adjoint_apply(v).sub(v)
     }
     /// `g cay ξ`; groups override it with the increment form of [`LieGroup::exp_compose`].
     fn cay_compose(g: &Self, xi: &Self::Algebra) -> Self {
@@ -283,6 +300,10 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     #[inline]
     fn tau_coadjoint_increment(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         G::cay_coadjoint_increment(xi, mu)
+    }
+    #[inline]
+    fn tau_adjoint_increment(xi: &G::Algebra, v: &G::Algebra) -> G::Algebra {
+        G::cay_adjoint_increment(xi, v)
     }
     #[inline]
     fn compose_tau(g: &G, xi: &G::Algebra) -> G {
