@@ -65,7 +65,8 @@ impl Side {
 /// - with `u = momentum_update(η, μ_k, ν)`, `(R̃_d^{T*})⁻¹((g_k, μ_k), (g_{k+1}, u.next))` is
 ///   `(ḡ, base_momentum(η, μ_k, u.next), η, ν)`;
 /// - `R̃_d^T(ḡ, ξ, η, ζ)` has body velocities `first_velocity(η, ξ, ζ)` and
-///   `second_velocity(η, ξ, ζ)`;
+///   `second_velocity(η, ξ, ζ)`, and `first_velocity_increment`, `second_velocity_increment`
+///   are these less ξ, rounded relative to their own size O(|η||ξ| + |ζ|);
 /// - the derivatives are those of the named maps, exact where the τ map has closed forms of
 ///   `∂/∂ζ (d^{L*}τ_ζ μ)` and otherwise exact up to O(|η|²) (enough for Newton's convergence).
 pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
@@ -162,6 +163,29 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
     fn first_velocity(&self, eta: &G::Algebra, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra;
     /// The body velocity `ξ_{k+1}` of the second point of `R̃_d^T(ḡ, ξ, η, ζ)`.
     fn second_velocity(&self, eta: &G::Algebra, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra;
+    /// `ξ_k − ξ`, the [`Self::first_velocity`] less ξ in increment form: O(|η||ξ| + |ζ|), rounded
+    /// relative to that size rather than to |ξ|, so that a step solving for ξ − ξ_k (the
+    /// Euler–Poincaré step) and adding its velocity change to ξ_k keeps its rounding at ε·h|ξ|.
+    /// The provided form is `first_velocity(η, ξ, ζ) − ξ`, rounded at ε|ξ|; the left and right
+    /// maps override it from `Tau::tau_adjoint_increment`.
+    fn first_velocity_increment(
+        &self,
+        eta: &G::Algebra,
+        xi: &G::Algebra,
+        zeta: &G::Algebra,
+    ) -> G::Algebra {
+        self.first_velocity(eta, xi, zeta).sub(xi)
+    }
+    /// `ξ_{k+1} − ξ`, the [`Self::second_velocity`] less ξ in increment form (see
+    /// [`Self::first_velocity_increment`]); the provided form is `second_velocity(η, ξ, ζ) − ξ`.
+    fn second_velocity_increment(
+        &self,
+        eta: &G::Algebra,
+        xi: &G::Algebra,
+        zeta: &G::Algebra,
+    ) -> G::Algebra {
+        self.second_velocity(eta, xi, zeta).sub(xi)
+    }
     /// For the field's step `η = hξ`: `(A, B)` with
     /// `∂/∂ξ first_velocity(hξ, ξ, ζ(ξ)) = A + B ∂ζ/∂ξ + O(h|ζ|)`: exact for ζ = 0; the term
     /// dropped is the ξ-dependence of the operator applied to ζ (O(h²) for ζ = h f).
@@ -425,6 +449,39 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             .inverse()
             .adjoint_apply(xi)
             .add(&T::dtau_left(&xb).apply(zeta).scale(b))
+    }
+    /// `ξ_k − ξ = (Ad_{τ(θη)} − I) ξ − θ d^Lτ_{−θη} ζ` (`Tau::tau_adjoint_increment`: no term of
+    /// size |ξ| is formed); 0 for θ = 0. For the Euler–Poincaré step, η = hξ, the first term
+    /// vanishes exactly in exact arithmetic (τ(sξ) commutes with ξ for exp and Cayley), and its
+    /// closed form leaves only a rounding of ε·θh|ξ|².
+    #[inline]
+    fn first_velocity_increment(
+        &self,
+        eta: &G::Algebra,
+        xi: &G::Algebra,
+        zeta: &G::Algebra,
+    ) -> G::Algebra {
+        let th = self.theta();
+        if th == 0.0 {
+            return G::Algebra::zeros(G::dim());
+        }
+        let xa = eta.scale(th);
+        T::tau_adjoint_increment(&xa, xi).sub(&T::dtau_left(&xa.neg()).apply(zeta).scale(th))
+    }
+    /// `ξ_{k+1} − ξ = (Ad_{τ(−(1−θ)η)} − I) ξ + (1−θ) d^Lτ_{(1−θ)η} ζ`; 0 for θ = 1.
+    #[inline]
+    fn second_velocity_increment(
+        &self,
+        eta: &G::Algebra,
+        xi: &G::Algebra,
+        zeta: &G::Algebra,
+    ) -> G::Algebra {
+        let b = 1.0 - self.theta();
+        if b == 0.0 {
+            return G::Algebra::zeros(G::dim());
+        }
+        let xb = eta.scale(b);
+        T::tau_adjoint_increment(&xb.neg(), xi).add(&T::dtau_left(&xb).apply(zeta).scale(b))
     }
     /// With `a = θh`: `A = Ad_{τ(aξ)} (I − a ad_ξ d^Lτ_{aξ})` (the derivative of
     /// `Ad_{τ(aξ)} ξ`, exact) and `B = −θ d^Lτ_{−aξ}`.

@@ -162,6 +162,21 @@ fn check_tangent_pieces<G: LieGroup, T: Tau<G>>(
         m.second_velocity(&eta, xi, zeta).sub(k1.fiber()).norm_max(),
         1e-12 * s,
     );
+    // the increment forms: the same velocities less ξ
+    assert_small(
+        "ξ + first_velocity_increment = ξ_k",
+        xi.add(&m.first_velocity_increment(&eta, xi, zeta))
+            .sub(k.fiber())
+            .norm_max(),
+        1e-12 * s,
+    );
+    assert_small(
+        "ξ + second_velocity_increment = ξ_{k+1}",
+        xi.add(&m.second_velocity_increment(&eta, xi, zeta))
+            .sub(k1.fiber())
+            .norm_max(),
+        1e-12 * s,
+    );
     // ζ ≡ 0: the derivative A is exact; ζ = hKξ: A + B hK up to O(h|ζ|) (h = 0.3 here; the
     // integrators use ζ = h f, so the neglected term is O(h²) in their Newton matrix).
     let kop = G::ad(c);
@@ -181,6 +196,56 @@ fn check_tangent_pieces<G: LieGroup, T: Tau<G>>(
             assert_small("∂ξ_k/∂ξ", d.apply(&dir).sub(&fd).norm_max(), tol);
         }
     }
+}
+
+/// The velocity increments keep their accuracy relative to their own size at small steps:
+/// at |η| = |ζ| = 1e-8 (ζ of the size of h f for h ≈ 1e-8) they are within 1e-13 (|η||ξ| + |ζ|)
+/// of the series `ξ_k − ξ = θ ad_η ξ + ½θ² ad_η² ξ − θ(ζ + ½θ ad_η ζ)`,
+/// `ξ_{k+1} − ξ = −(1−θ) ad_η ξ + ½(1−θ)² ad_η² ξ + (1−θ)(ζ − ½(1−θ) ad_η ζ)` (from
+/// `Ad_{τ(x)} = I + ad_x + ½ad_x² + O(x³)` and `d^Lτ_x = I − ½ad_x + O(x²)` for both τ; the
+/// dropped terms are 1e-16 of the size there). The whole velocities less ξ round at ε|ξ|, 1e-8 of
+/// the size.
+fn check_velocity_increments_at_small_steps<G: LieGroup, T: Tau<G>>(
+    dir: &G::Algebra,
+    xi: &G::Algebra,
+    zdir: &G::Algebra,
+    theta: f64,
+) {
+    let m = map::<G, T>(theta);
+    let unit = |v: &G::Algebra| {
+        let n = v.norm_max();
+        if n == 0.0 {
+            v.clone()
+        } else {
+            v.scale(1e-8 / n)
+        }
+    };
+    let (eta, zeta) = (unit(dir), unit(zdir));
+    let ad = |x: &G::Algebra| G::bracket(&eta, x);
+    let b = 1.0 - theta;
+    let first = ad(xi)
+        .scale(theta)
+        .axpy(0.5 * theta * theta, &ad(&ad(xi)))
+        .sub(&zeta.axpy(0.5 * theta, &ad(&zeta)).scale(theta));
+    let second = ad(xi)
+        .scale(-b)
+        .axpy(0.5 * b * b, &ad(&ad(xi)))
+        .add(&zeta.axpy(-0.5 * b, &ad(&zeta)).scale(b));
+    let size = eta.norm_max() * xi.norm_max() + zeta.norm_max();
+    assert_small(
+        "first_velocity_increment at |η| = 1e-8",
+        m.first_velocity_increment(&eta, xi, &zeta)
+            .sub(&first)
+            .norm_max(),
+        1e-13 * size,
+    );
+    assert_small(
+        "second_velocity_increment at |η| = 1e-8",
+        m.second_velocity_increment(&eta, xi, &zeta)
+            .sub(&second)
+            .norm_max(),
+        1e-13 * size,
+    );
 }
 
 macro_rules! lifted_map_suite {
@@ -223,6 +288,33 @@ lifted_map_suite!(se2_exp, Se2, ExpMap, false);
 lifted_map_suite!(se2_cayley, Se2, Cayley, false);
 lifted_map_suite!(so4_exp, SoN<4>, ExpMap, false);
 lifted_map_suite!(so4_cayley, SoN<4>, Cayley, false);
+
+/// [`check_velocity_increments_at_small_steps`] where τ has closed-form adjoint increments
+/// (`Tau::tau_adjoint_increment`; SO(4) has only the matrix form, rounded at ε|ξ|).
+macro_rules! increment_suite {
+    ($name:ident, $G:ty, $T:ty) => {
+        mod $name {
+            use super::*;
+            use lie_groups::testing::algebra;
+            use proptest::prelude::*;
+            type G = $G;
+            proptest! {
+                #![proptest_config(ProptestConfig::with_cases(48))]
+                #[test]
+                fn velocity_increments_keep_their_relative_accuracy_at_small_steps(dir in algebra::<G>(1.0), xi in algebra::<G>(2.0), zeta in algebra::<G>(1.0), th in prop_oneof![Just(0.0), Just(0.5), Just(1.0), 0.0..1.0f64]) {
+                    check_velocity_increments_at_small_steps::<G, $T>(&dir, &xi, &zeta, th);
+                }
+            }
+        }
+    };
+}
+
+increment_suite!(so3_exp_increments, So3, ExpMap);
+increment_suite!(so3_cayley_increments, So3, Cayley);
+increment_suite!(se3_exp_increments, Se3, ExpMap);
+increment_suite!(se3_cayley_increments, Se3, Cayley);
+increment_suite!(se2_exp_increments, Se2, ExpMap);
+increment_suite!(se2_cayley_increments, Se2, Cayley);
 
 /// SO(3)'s one-product `g cay(θη) cay((1−θ)η) = g cay(η/(1 − θ(1−θ)|η|²/4))`, and the one
 /// coadjoint increment of the same element, on both sides of the switch to two factors
