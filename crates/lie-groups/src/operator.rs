@@ -135,4 +135,14 @@ impl<V: Vector> Operator<V> for Mat<f64> {
     fn try_inverse(&self) -> Option<Self> {
         crate::matrix::dense::try_inverse(self.as_ref())
     }
+    /// In place (the provided form copies the matrix first).
+    fn norm_max(&self) -> f64 {
+        let mut best = 0.0f64;
+        for j in 0..self.ncols() {
+            for i in 0..self.nrows() {
+                best = best.max(self[(i, j)].abs());
+            }
+        }
+        best
+    }
 }

@@ -106,6 +106,23 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     fn dtau_left_dual_derivative(_xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {
         crate::group::half_ad_dual_operator::<G>(mu)
     }
+    /// `E τ(ξ; v) := ∂/∂ξ (d^Lτ_ξ v)`, the operator `δ ↦ (d/ds) d^Lτ_{ξ+sδ} v |_{s=0}`: the
+    /// second derivative of τ that Newton's matrix for the Euler–Poincaré step needs (its
+    /// velocities apply d^Lτ, not the dual).
+    ///
+    /// Differentiating `⟨μ, d^Lτ_ξ v⟩ = ⟨d^{L*}τ_ξ μ, v⟩` gives `⟨μ, E(ξ; v) δ⟩ = ⟨D(ξ; μ) δ, v⟩`
+    /// ([`Tau::dtau_left_dual_derivative`]), so the i-th row of E is `vᵀ D(ξ; eᵢ)`: n evaluations
+    /// of D, exact wherever D is (exp on every group, Cayley on SO(3), SE(3), SE(2)); at ξ = 0 it
+    /// is `½ ad_v` (from `d^Lτ_ξ = I − ½ ad_ξ + O(ξ²)`).
+    fn dtau_left_derivative(xi: &G::Algebra, v: &G::Algebra) -> G::Operator {
+        let n = G::dim();
+        // Row i of E is (D(ξ; eᵢ)ᵀ v)ᵀ: Eᵀ column by column, one D each (on the stack for the
+        // fixed-size groups).
+        crate::matrix_path::operator_from_column_fn::<G>(|i| {
+            Self::dtau_left_dual_derivative(xi, &G::Algebra::basis(n, i)).apply_transpose(v)
+        })
+        .transpose()
+    }
 }
 
 /// `δ_a μ + δ_b μ + δ_b(δ_a μ)` (a = θξ, b = (1−θ)ξ, `δ_ζ = Ad*_{τ(ζ)} − I`): the provided

@@ -34,8 +34,56 @@ fn check<G: LieGroup, T: Tau<G>>(xi: &G::Algebra, mu: &G::Algebra) {
     );
 }
 
+/// Central differences of ξ ↦ d^Lτ_ξ v (the tangent itself, independently tested against
+/// finite differences of τ by the τ suite).
+fn fd_tangent<G: LieGroup, T: Tau<G>>(xi: &G::Algebra, v: &G::Algebra) -> G::Operator {
+    let (n, d) = (G::dim(), 1e-5);
+    lie_groups::matrix_path::operator_from_column_fn::<G>(|j| {
+        let e = G::Algebra::basis(n, j);
+        let p = T::dtau_left(&xi.axpy(d, &e)).apply(v);
+        let m = T::dtau_left(&xi.axpy(-d, &e)).apply(v);
+        p.sub(&m).scale(0.5 / d)
+    })
+}
+
+/// `E τ(ξ; v) = ∂/∂ξ (d^Lτ_ξ v)` (from D by duality) against central differences of d^Lτ_ξ v;
+/// at ξ = 0 it is `½ ad_v`.
+fn check_tangent_derivative<G: LieGroup, T: Tau<G>>(xi: &G::Algebra, v: &G::Algebra) {
+    let e = T::dtau_left_derivative(xi, v);
+    let off = e.add(&fd_tangent::<G, T>(xi, v).scale(-1.0)).norm_max();
+    let scale = 1.0 + v.norm_max() * (1.0 + xi.norm_max());
+    assert_small(
+        &format!("E {} on {} at |ξ| = {:.2}", T::NAME, G::name(), xi.norm()),
+        off,
+        1e-8 * scale,
+    );
+    let zero = G::Algebra::zeros(G::dim());
+    assert_small(
+        "E(0; v) = ½ ad_v",
+        T::dtau_left_derivative(&zero, v)
+            .add(&G::ad(v).scale(-0.5))
+            .norm_max(),
+        1e-15 * (1.0 + v.norm_max()),
+    );
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn tangent_derivative_is_exact_where_d_is(xi in algebra::<Se3>(1.5), v in algebra::<Se3>(2.0), w in algebra::<So3>(2.5), u in algebra::<So3>(2.0), p in algebra::<Se2>(2.0), q in algebra::<Se2>(2.0)) {
+        check_tangent_derivative::<Se3, ExpMap>(&xi, &v);
+        check_tangent_derivative::<Se3, Cayley>(&xi, &v);
+        check_tangent_derivative::<So3, ExpMap>(&w, &u);
+        check_tangent_derivative::<So3, Cayley>(&w, &u);
+        check_tangent_derivative::<Se2, ExpMap>(&p, &q);
+        check_tangent_derivative::<Se2, Cayley>(&p, &q);
+    }
+
+    #[test]
+    fn so4_exp_tangent_derivative_is_exact(xi in algebra::<SoN<4>>(1.5), v in algebra::<SoN<4>>(2.0)) {
+        check_tangent_derivative::<SoN<4>, ExpMap>(&xi, &v);
+    }
 
     #[test]
     fn se3_exact(xi in algebra::<Se3>(1.5), mu in algebra::<Se3>(2.0)) {
