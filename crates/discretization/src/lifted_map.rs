@@ -186,10 +186,17 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
     ) -> G::Algebra {
         self.second_velocity(eta, xi, zeta).sub(xi)
     }
-    /// For the field's step `η = hξ`: `(A, B)` with
-    /// `∂/∂ξ first_velocity(hξ, ξ, ζ(ξ)) = A + B ∂ζ/∂ξ + O(h|ζ|)`: exact for ζ = 0; the term
-    /// dropped is the ξ-dependence of the operator applied to ζ (O(h²) for ζ = h f).
-    fn first_velocity_derivative(&self, h: f64, xi: &G::Algebra) -> (G::Operator, G::Operator);
+    /// For the field's step `η = hξ` at `ζ = ζ(ξ)`: `(A, B)` with
+    /// `∂/∂ξ first_velocity(hξ, ξ, ζ(ξ)) = A + B ∂ζ/∂ξ` — A the derivative with ζ held fixed,
+    /// B = ∂/∂ζ — what the Newton matrix of the Euler–Poincaré step is built from (with
+    /// ∂r/∂δ = ∂r/∂ξ for its unknown δ = ξ − ξ_k). Exact where τ's second derivative
+    /// (`Tau::dtau_left_derivative`) is; otherwise its error is O(h|hξ||ζ|).
+    fn first_velocity_derivative(
+        &self,
+        h: f64,
+        xi: &G::Algebra,
+        zeta: &G::Algebra,
+    ) -> (G::Operator, G::Operator);
 }
 
 /// The left-trivialized map `R̃_d(ḡ, η) = (ḡ τ(−θη), ḡ τ((1−θ)η))` of §3.2.
@@ -483,16 +490,23 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
         let xb = eta.scale(b);
         T::tau_adjoint_increment(&xb.neg(), xi).add(&T::dtau_left(&xb).apply(zeta).scale(b))
     }
-    /// With `a = θh`: `A = Ad_{τ(aξ)} (I − a ad_ξ d^Lτ_{aξ})` (the derivative of
-    /// `Ad_{τ(aξ)} ξ`, exact) and `B = −θ d^Lτ_{−aξ}`.
-    fn first_velocity_derivative(&self, h: f64, xi: &G::Algebra) -> (G::Operator, G::Operator) {
+    /// With `a = θh`: `A = Ad_{τ(aξ)} (I − a ad_ξ d^Lτ_{aξ}) + θa E(−aξ; ζ)` (the derivative of
+    /// `Ad_{τ(aξ)} ξ`, and of `−θ d^Lτ_{−aξ} ζ` at fixed ζ with
+    /// `E(x; v) = ∂/∂x (d^Lτ_x v)`, `Tau::dtau_left_derivative`) and `B = −θ d^Lτ_{−aξ}`.
+    fn first_velocity_derivative(
+        &self,
+        h: f64,
+        xi: &G::Algebra,
+        zeta: &G::Algebra,
+    ) -> (G::Operator, G::Operator) {
         let th = self.theta();
         let a = th * h;
         let xa = xi.scale(a);
         let id = G::Operator::identity(G::dim());
         let first = T::tau(&xa)
             .adjoint()
-            .compose(&id.add(&G::ad(xi).compose(&T::dtau_left(&xa)).scale(-a)));
+            .compose(&id.add(&G::ad(xi).compose(&T::dtau_left(&xa)).scale(-a)))
+            .add(&T::dtau_left_derivative(&xa.neg(), zeta).scale(th * a));
         (first, T::dtau_left(&xa.neg()).scale(-th))
     }
 }

@@ -137,7 +137,12 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for RightDiscretizationMap<T> {
         LiftedMap::<G>::second_velocity_increment(&self.left, &eta.neg(), xi, zeta)
     }
     /// The left map's at −h: `first_velocity(hξ, ξ, ζ) = first_velocity_L((−h)ξ, ξ, ζ)`.
-    fn first_velocity_derivative(&self, h: f64, xi: &G::Algebra) -> (G::Operator, G::Operator) {
-        LiftedMap::<G>::first_velocity_derivative(&self.left, -h, xi)
+    fn first_velocity_derivative(
+        &self,
+        h: f64,
+        xi: &G::Algebra,
+        zeta: &G::Algebra,
+    ) -> (G::Operator, G::Operator) {
+        LiftedMap::<G>::first_velocity_derivative(&self.left, -h, xi, zeta)
     }
 }

@@ -194,11 +194,14 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             .sub(&self.xi)
     }
 
-    /// ∂r/∂ξ up to O(h²): `A + B h ∂f/∂ξ` with the map's
-    /// [`LiftedMap::first_velocity_derivative`] (A, B) and
+    /// ∂r/∂ξ: `A + B h ∂f/∂ξ` with the map's
+    /// [`LiftedMap::first_velocity_derivative`] (A, B) at ζ = h f(ḡ, ξ) and
     /// `∂f/∂ξ ≈ H (M(μ) + ad_ξᵀ H⁻¹)`, H = ∂²h/∂μ², M(μ) = (δ ↦ ad*_δ μ) (drops ∂H/∂μ and ∂F).
     fn jacobian(&self, h: f64, xi: &G::Algebra) -> G::Operator {
-        let (a, b) = self.map.first_velocity_derivative(h, xi);
+        let zeta = self
+            .field(self.t + self.theta() * h, self.base(h, xi).as_ref(), xi)
+            .scale(h);
+        let (a, b) = self.map.first_velocity_derivative(h, xi, &zeta);
         let mu = self.system.momentum(xi);
         let hess = self.system.hessian(&mu);
         let mut df = hess.compose(&G::ad_dual_operator(&mu));
