@@ -122,8 +122,11 @@ impl<G: LieGroup, T: Tau<G>, S: System<G>> StateSnapshot for EulerPoincare<G, T,
         self.reset(t, xi, g)
     }
     fn set_time(&mut self, t: f64) -> Result<(), IntegratorError> {
-        let (_, xi, g) = self.snapshot();
-        self.reset(t, xi, g)
+        if !t.is_finite() {
+            return Err(IntegratorError::NonFinite { what: "time t" });
+        }
+        self.set_time_only(t);
+        Ok(())
     }
 }
 

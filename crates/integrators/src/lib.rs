@@ -80,6 +80,7 @@
 #![warn(missing_docs)]
 
 pub mod baselines;
+mod compensated;
 pub mod compose;
 pub mod dense_output;
 pub mod derivative_check;

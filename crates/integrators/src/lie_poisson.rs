@@ -36,6 +36,7 @@
 //! `−½ ad*_{(·)} μ`, which remains the default for other groups, keeps J exact up to O(h²) and
 //! needed 5–6); the force's derivative is dropped (see [`crate::solver`]).
 
+use crate::compensated::two_sum;
 use crate::solver::{solve, Solution};
 use crate::system::force;
 use crate::WarmStart;
@@ -314,6 +315,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         let solution = solve::<G, _>(
             &self.config,
             h,
+            0.0,
             guess,
             &mut chord,
             prior,
@@ -381,10 +383,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         let dmu = self.map.momentum_increment(&xi, &self.mu, impulse.as_ref());
         // μ_{k+1} = μ_k + (Δμ + carried error), by TwoSum (Knuth): the new rounding error is kept
         // exactly for the next step (compensated summation, Vilmart 2008).
-        let (a, b) = (&self.mu, dmu.add(&self.mu_err));
-        let mu1 = a.add(&b);
-        let bb = mu1.sub(a);
-        let err = a.sub(&mu1.sub(&bb)).add(&b.sub(&bb));
+        let (mu1, err) = two_sum(&self.mu, &dmu.add(&self.mu_err));
         if !mu1.is_finite() || !err.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "momentum μ_{k+1}",

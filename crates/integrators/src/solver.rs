@@ -25,8 +25,11 @@
 //!   Lie–Poisson matrix includes the force's term `∂μ̄/∂ν · h K(ḡ) · ∂ḡ/∂ξ`
 //!   ([`crate::System::force_derivative`], central differences unless the system gives it): the
 //!   heavy top at h = 0.1 takes 2.8 Newton iterations per step, as with a finite-difference
-//!   Jacobian (5.4 without the term). An external force's derivative is not included; the
-//!   Euler–Poincaré Jacobian has its own O(h²) approximations (see [`crate::euler_poincare`]).
+//!   Jacobian (5.4 without the term). An external force's derivative is not included. The
+//!   Euler–Poincaré Jacobian differentiates d^Lτ through `E(ξ; v) = ∂/∂ξ (d^Lτ_ξ v)`
+//!   ([`lie_groups::Tau::dtau_left_derivative`], from D by duality) and includes the potential's
+//!   term likewise: exact for a quadratic Hamiltonian wherever D is (see
+//!   [`crate::euler_poincare`]).
 //! - [`SolverKind::NewtonFiniteDifference`]: Newton with J from central differences of r
 //!   (2n residual evaluations per iteration): quadratic convergence, a documented fallback for
 //!   large steps where an O(h²) Jacobian error matters (groups without closed forms, potentials).
@@ -34,7 +37,10 @@
 //!   contracts by a factor O(h ‖∂²h/∂μ²‖ ‖μ‖).
 //!
 //! The iteration stops when the estimated error of ξ is within `tolerance · ‖ξ‖_max` (relative, so
-//! that |μ| = 1e-8 is solved as accurately as |μ| = 1): with `ρ = ‖Δξ_k‖/‖Δξ_{k−1}‖ < 1` the
+//! that |μ| = 1e-8 is solved as accurately as |μ| = 1) — or, for an unknown that may be much
+//! smaller than the data it is computed from, within the rounding 8ε·scale of that data (the
+//! Euler–Poincaré step solves for the increment ξ̄ − ξ_k, which vanishes where the field does
+//! while its residual is still rounded at ε·θh|ξ|²; see [`solve`]): with `ρ = ‖Δξ_k‖/‖Δξ_{k−1}‖ < 1` the
 //! error left after the update Δξ_k is estimated by `ρ/(1−ρ) ‖Δξ_k‖` (Hairer & Wanner, *Solving
 //! ODEs II*, §IV.8), which saves the last, confirming iteration of a plain `‖Δξ_k‖ ≤ tolerance`
 //! test; at the first iteration, or when the updates no longer contract (round-off level), the
@@ -159,12 +165,24 @@ pub struct Solution<A, E> {
 /// `ρ = ‖Δξ_k‖/‖Δξ_{k−1}‖ < 1`, the error left after the update Δξ_k is at most about
 /// `ρ/(1−ρ) ‖Δξ_k‖`; the iteration stops when that estimate (or ‖Δξ_k‖ itself at the first
 /// iteration, or when the updates stop contracting at round-off level) is within
-/// `tolerance · ‖ξ‖_max`, or when the update no longer changes ξ in floating point (Δξ = 0 or
-/// below half an ulp of ξ), where further iterations would repeat the last one.
+/// `max(tolerance · ‖ξ‖_max, 8ε · scale)`, or when the update no longer changes ξ in floating
+/// point (Δξ = 0 or below half an ulp of ξ), where further iterations would repeat the last one.
+///
+/// `scale` is the size of the data the residual is computed from, where ‖ξ‖ may be far smaller:
+/// the tolerance stays relative to ‖ξ‖, but no iteration can resolve ξ better than the rounding
+/// of that data, 8ε·scale (8 ulps), which is therefore also a floor of the stopping test; updates
+/// below it measure no contraction, and the finite-difference steps are taken relative to
+/// `max(‖ξ‖_max, scale)`.
+/// An unknown of the size of its data passes 0 (Lie–Poisson's η = hξ); an increment that may
+/// vanish while its residual still rounds at the data's size passes that size (Euler–Poincaré's
+/// ξ̄ − ξ_k), without which an increment of 1e-20 against a residual rounded at 1e-18 could never
+/// be certified.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)] // each an independent input: config, h (named by errors), the data's size, guess, warm matrix and prior, the two callbacks
 pub fn solve<G: LieGroup, E>(
     config: &SolverConfig,
     step: f64,
+    scale: f64,
     mut xi: G::Algebra,
     chord: &mut Option<G::Operator>,
     prior: Option<f64>,
@@ -208,9 +226,9 @@ pub fn solve<G: LieGroup, E>(
                 }
             },
             SolverKind::NewtonFiniteDifference => {
-                let scale = xi.norm_max().max(f64::MIN_POSITIVE.sqrt());
+                let size = xi.norm_max().max(scale).max(f64::MIN_POSITIVE.sqrt());
                 // Central differences: error O(δ²) + O(ε/δ); δ = ε^{1/3} ‖ξ‖ balances them.
-                let d = 6.055e-6 * scale;
+                let d = 6.055e-6 * size;
                 let j = operator_from_columns::<G>(n, |k| {
                     let e = G::Algebra::basis(n, k);
                     let (plus, _) = evaluate(&xi.axpy(d, &e));
@@ -237,7 +255,7 @@ pub fn solve<G: LieGroup, E>(
             // An update at the rounding of ξ (a few ulps) measures the rounding, not the
             // contraction: it neither counts against the matrix nor claims ρ ≈ 0 for the next
             // step's prior, which gets the bound ρ ≤ max(‖Δξ_k‖, ε‖ξ‖)/‖Δξ_{k−1}‖ instead.
-            let rounding = f64::EPSILON * xi.norm_max();
+            let rounding = f64::EPSILON * xi.norm_max().max(scale);
             if dn > ROUNDING_UPDATES * rounding {
                 contraction = contraction.max(dn / previous_update);
             }
@@ -252,7 +270,11 @@ pub fn solve<G: LieGroup, E>(
         } else {
             dn
         };
-        if unchanged || error_estimate <= tolerance * xi.norm_max() {
+        // Below the rounding of the data (ROUNDING_UPDATES ulps of `scale`) the residual cannot
+        // resolve ξ any better: there the iteration is as converged as floating point allows
+        // (it used to cycle or creep into NoConvergence where ξ is far smaller than its data).
+        let floor = ROUNDING_UPDATES * f64::EPSILON * scale;
+        if unchanged || error_estimate <= (tolerance * xi.norm_max()).max(floor) {
             return Ok(Solution {
                 xi,
                 iterations: it,
@@ -307,11 +329,17 @@ mod tests {
         };
         let xi0 = Vector3::new(1.0, 1.0, 1.0);
         let evaluate = |xi: &Vector3<f64>| (Vector3::new(1e-30, 0.0, 0.0), *xi);
-        let solution =
-            solve::<So3, Vector3<f64>>(&config, 0.1, xi0, &mut None, None, evaluate, |_, _| {
-                Matrix3::identity()
-            })
-            .unwrap();
+        let solution = solve::<So3, Vector3<f64>>(
+            &config,
+            0.1,
+            0.0,
+            xi0,
+            &mut None,
+            None,
+            evaluate,
+            |_, _| Matrix3::identity(),
+        )
+        .unwrap();
         assert_eq!(solution.xi, xi0);
         assert_eq!(solution.iterations, 1);
         assert_eq!(solution.evaluation, Some(xi0));
@@ -345,6 +373,7 @@ mod tests {
             let solution = solve::<So3, ()>(
                 &config,
                 0.1,
+                0.0,
                 target + Vector3::repeat(delta),
                 &mut None,
                 None,
@@ -354,6 +383,48 @@ mod tests {
             .unwrap_or_else(|e| panic!("{kind:?}: {e}"));
             assert!((solution.xi - target).amax() <= 2.0 * delta, "{kind:?}");
         }
+    }
+
+    /// An increment whose solution is ~0 while its residual rounds at the size of the data it is
+    /// computed from: r(ξ) = (ξ − ξ*) + δ sign(ξ − ξ*) with ξ* = 1e-20 and δ = 1e-18 (the
+    /// rounding of data of size 1e-2) cycles between ξ* ± δ. Relative to ‖ξ‖ alone no tolerance
+    /// is ever met (NoConvergence after the iteration limit); with the data's size 1e-2 as
+    /// `scale` the updates of 2δ are within its rounding floor 8ε · 1e-2 and the iteration stops,
+    /// within 2δ of ξ*.
+    #[test]
+    fn an_increment_at_the_rounding_of_its_data_is_certified_against_the_scale() {
+        let target = Vector3::new(1e-20, -1e-20, 0.0);
+        let delta = 1e-18;
+        let evaluate = |xi: &Vector3<f64>| {
+            let d = xi - target;
+            (
+                d + d.map(|x| delta * if x == 0.0 { 0.0 } else { x.signum() }),
+                (),
+            )
+        };
+        let config = SolverConfig {
+            kind: SolverKind::FixedPoint,
+            ..SolverConfig::default()
+        };
+        let start = target + Vector3::repeat(delta);
+        let run = |scale: f64| {
+            solve::<So3, ()>(
+                &config,
+                0.1,
+                scale,
+                start,
+                &mut None,
+                None,
+                evaluate,
+                |_, _| Matrix3::identity(),
+            )
+        };
+        assert!(matches!(
+            run(0.0),
+            Err(IntegratorError::NoConvergence { .. })
+        ));
+        let solution = run(1e-2).expect("certified against the scale");
+        assert!((solution.xi - target).amax() <= 2.0 * delta);
     }
 
     /// The error estimate ρ/(1−ρ)‖Δξ‖ bounds what a slowly contracting iteration leaves: for
@@ -374,6 +445,7 @@ mod tests {
         let solution = solve::<So3, ()>(
             &config,
             0.1,
+            0.0,
             Vector3::zeros(),
             &mut None,
             None,
