@@ -319,8 +319,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                 (self.residual(h, d, &ev), ev)
             };
             // Predictor δ⁰ = θh f(g_k, ξ_k): r(δ) = δ − θh f + O(h²) at δ = O(h), so δ⁰ is within
-            // O(h²) of the solution (δ = 0 is O(h)). After five steps of this size: the
-            // WarmStart extrapolation of the past increments, O(h⁶).
+            // O(h²) of the solution (δ = 0 is O(h)). After six steps of this size: the
+            // WarmStart extrapolation of the past increments, O(h⁷).
             let (f0, size) = self.field_and_size(self.t, self.g.as_ref(), &self.xi);
             let guess = self.warm.predict(h).unwrap_or_else(|| f0.scale(theta * h));
             // The residual's terms are rounded at ε·θ|h| (‖ξ‖² + the field's data) even where δ

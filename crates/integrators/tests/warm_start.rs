@@ -1,4 +1,4 @@
-//! The solver's warm start across steps ([`WarmStart`]): the quartic extrapolation of past
+//! The solver's warm start across steps ([`WarmStart`]): the quintic extrapolation of past
 //! solutions, the reuse of the last Newton matrix and the contraction prior carried with it change
 //! where the iteration starts and when it may stop, not what it converges to, and they remove the
 //! Jacobian and most second residuals from steady runs at a fixed step.
@@ -21,43 +21,44 @@ fn g0() -> Option<So3> {
 
 const PI0: Vector3<f64> = Vector3::new(0.5, 1.0, 0.2);
 
-/// Five records of one step size are needed; the extrapolation reproduces quartics exactly (to
-/// round-off) and is O(δ⁵) for smooth sequences; a new step size starts afresh.
+/// Six records of one step size are needed; the extrapolation reproduces quintics exactly (to
+/// round-off) and is O(δ⁶) for smooth sequences; a new step size starts afresh.
 #[test]
-fn extrapolation_is_exact_for_quartics_and_needs_five_steps_of_one_size() {
-    let quartic = |k: f64| {
+fn extrapolation_is_exact_for_quintics_and_needs_six_steps_of_one_size() {
+    let quintic = |k: f64| {
         Vector3::new(1.0, -2.0, 0.5) + Vector3::new(0.3, 0.1, -0.2) * k
             - Vector3::new(0.02, 0.05, 0.01) * (k * k)
             + Vector3::new(0.004, -0.001, 0.002) * (k * k * k)
             + Vector3::new(-3e-4, 2e-4, 1e-4) * (k * k * k * k)
+            + Vector3::new(2e-5, -1e-5, 3e-5) * (k * k * k * k * k)
     };
     let mut w = WarmStart::<So3>::default();
-    for k in 0..5 {
+    for k in 0..6 {
         assert!(w.predict(0.1).is_none(), "after {k} records");
-        w.record(0.1, &quartic(k as f64), None, 0);
+        w.record(0.1, &quintic(k as f64), None, 0);
     }
-    let p = w.predict(0.1).expect("five records of h = 0.1");
-    assert!((p - quartic(5.0)).amax() < 1e-13, "{p} vs {}", quartic(5.0));
+    let p = w.predict(0.1).expect("six records of h = 0.1");
+    assert!((p - quintic(6.0)).amax() < 1e-12, "{p} vs {}", quintic(6.0));
     // the ring keeps going: one more record, the next value
-    w.record(0.1, &quartic(5.0), None, 0);
+    w.record(0.1, &quintic(6.0), None, 0);
     let p = w.predict(0.1).unwrap();
-    assert!((p - quartic(6.0)).amax() < 1e-13, "{p} vs {}", quartic(6.0));
+    assert!((p - quintic(7.0)).amax() < 1e-12, "{p} vs {}", quintic(7.0));
     assert!(w.predict(0.2).is_none(), "another step size");
     assert!(w.predict(-0.1).is_none(), "the reversed step");
-    w.record(0.2, &quartic(7.0), None, 0);
+    w.record(0.2, &quintic(8.0), None, 0);
     assert!(w.predict(0.1).is_none() && w.predict(0.2).is_none());
-    // a smooth non-polynomial sequence: error O(δ⁵) in the sample spacing δ
+    // a smooth non-polynomial sequence: error O(δ⁶) in the sample spacing δ
     let err = |d: f64| {
         let mut w = WarmStart::<So3>::default();
-        // (no component with a vanishing fifth derivative at 0, which would hide the δ⁵ term)
-        let f = |t: f64| Vector3::new(t.sin(), (t + 0.3).cos(), (0.5 * t).exp());
-        for k in 0..5 {
+        // (no component with a vanishing sixth derivative at 0, which would hide the δ⁶ term)
+        let f = |t: f64| Vector3::new((t + 0.4).sin(), (t + 0.3).cos(), (0.5 * t).exp());
+        for k in 0..6 {
             w.record(d, &f(k as f64 * d), None, 0);
         }
-        (w.predict(d).unwrap() - f(5.0 * d)).amax()
+        (w.predict(d).unwrap() - f(6.0 * d)).amax()
     };
-    let order = (err(0.02) / err(0.01)).log2();
-    assert!((4.8..5.2).contains(&order), "extrapolation order {order}");
+    let order = (err(0.04) / err(0.02)).log2();
+    assert!((5.8..6.2).contains(&order), "extrapolation order {order}");
 }
 
 /// The Newton matrix is handed to the next step only if its iteration contracted well, and only
