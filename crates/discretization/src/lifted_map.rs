@@ -65,8 +65,8 @@ impl Side {
 /// - with `u = momentum_update(η, μ_k, ν)`, `(R̃_d^{T*})⁻¹((g_k, μ_k), (g_{k+1}, u.next))` is
 ///   `(ḡ, base_momentum(η, μ_k, u.next), η, ν)`;
 /// - `R̃_d^T(ḡ, ξ, η, ζ)` has body velocities `first_velocity(η, ξ, ζ)` and
-///   `second_velocity(η, ξ, ζ)`, and `first_velocity_increment`, `second_velocity_increment`
-///   are these less ξ, rounded relative to their own size O(|η||ξ| + |ζ|);
+///   `second_velocity(η, ξ, ζ)`, and at η = hξ `first_velocity_increment`,
+///   `second_velocity_increment` are these less ξ, rounded relative to their own size;
 /// - the derivatives are those of the named maps, exact where the τ map has closed forms of
 ///   `∂/∂ζ (d^{L*}τ_ζ μ)` and otherwise exact up to O(|η|²) (enough for Newton's convergence).
 pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
@@ -163,28 +163,19 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
     fn first_velocity(&self, eta: &G::Algebra, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra;
     /// The body velocity `ξ_{k+1}` of the second point of `R̃_d^T(ḡ, ξ, η, ζ)`.
     fn second_velocity(&self, eta: &G::Algebra, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra;
-    /// `ξ_k − ξ`, the [`Self::first_velocity`] less ξ in increment form: O(|η||ξ| + |ζ|), rounded
-    /// relative to that size rather than to |ξ|, so that a step solving for ξ − ξ_k (the
-    /// Euler–Poincaré step) and adding its velocity change to ξ_k keeps its rounding at ε·h|ξ|.
-    /// The provided form is `first_velocity(η, ξ, ζ) − ξ`, rounded at ε|ξ|; the left and right
-    /// maps override it from `Tau::tau_adjoint_increment`.
-    fn first_velocity_increment(
-        &self,
-        eta: &G::Algebra,
-        xi: &G::Algebra,
-        zeta: &G::Algebra,
-    ) -> G::Algebra {
-        self.first_velocity(eta, xi, zeta).sub(xi)
+    /// For the field's step `η = hξ`: `ξ_k − ξ` of `R̃_d^T(ḡ, ξ, hξ, ζ)`, the
+    /// [`Self::first_velocity`] less ξ in increment form: O(h|ξ|² + |ζ|), rounded relative to
+    /// that size rather than to |ξ|, so that a step solving for ξ − ξ_k (the Euler–Poincaré step)
+    /// and adding its velocity change to ξ_k keeps its rounding at that size. The provided form is
+    /// `first_velocity(hξ, ξ, ζ) − ξ`, rounded at ε|ξ|; the left and right maps override it.
+    fn first_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
+        self.first_velocity(&xi.scale(h), xi, zeta).sub(xi)
     }
-    /// `ξ_{k+1} − ξ`, the [`Self::second_velocity`] less ξ in increment form (see
-    /// [`Self::first_velocity_increment`]); the provided form is `second_velocity(η, ξ, ζ) − ξ`.
-    fn second_velocity_increment(
-        &self,
-        eta: &G::Algebra,
-        xi: &G::Algebra,
-        zeta: &G::Algebra,
-    ) -> G::Algebra {
-        self.second_velocity(eta, xi, zeta).sub(xi)
+    /// For the field's step `η = hξ`: `ξ_{k+1} − ξ`, the [`Self::second_velocity`] less ξ in
+    /// increment form (see [`Self::first_velocity_increment`]); the provided form is
+    /// `second_velocity(hξ, ξ, ζ) − ξ`.
+    fn second_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
+        self.second_velocity(&xi.scale(h), xi, zeta).sub(xi)
     }
     /// For the field's step `η = hξ` at `ζ = ζ(ξ)`: `(A, B)` with
     /// `∂/∂ξ first_velocity(hξ, ξ, ζ(ξ)) = A + B ∂ζ/∂ξ` — A the derivative with ζ held fixed,
@@ -457,42 +448,43 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             .adjoint_apply(xi)
             .add(&T::dtau_left(&xb).apply(zeta).scale(b))
     }
-    /// `ξ_k − ξ = (Ad_{τ(θη)} − I) ξ − θ d^Lτ_{−θη} ζ` (`Tau::tau_adjoint_increment`: no term of
-    /// size |ξ| is formed); 0 for θ = 0. For the Euler–Poincaré step, η = hξ, the first term
-    /// vanishes exactly in exact arithmetic (τ(sξ) commutes with ξ for exp and Cayley), and its
-    /// closed form leaves only a rounding of ε·θh|ξ|².
+    /// `ξ_k − ξ = (Ad_{τ(θhξ)} − I) ξ − θ d^Lτ_{−θhξ} ζ`; 0 for θ = 0. The first term vanishes
+    /// where τ(sξ) commutes with ξ (`Tau::COMMUTES_WITH_ARGUMENT`: exp, Cayley) and is not formed
+    /// there; otherwise it is `Tau::tau_adjoint_increment` (no term of size |ξ| formed).
     #[inline]
-    fn first_velocity_increment(
-        &self,
-        eta: &G::Algebra,
-        xi: &G::Algebra,
-        zeta: &G::Algebra,
-    ) -> G::Algebra {
+    fn first_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
         let th = self.theta();
         if th == 0.0 {
             return G::Algebra::zeros(G::dim());
         }
-        let xa = eta.scale(th);
-        T::tau_adjoint_increment(&xa, xi).sub(&T::dtau_left(&xa.neg()).apply(zeta).scale(th))
+        let xa = xi.scale(th * h);
+        let inc = T::dtau_left(&xa.neg()).apply(zeta).scale(-th);
+        if T::COMMUTES_WITH_ARGUMENT {
+            inc
+        } else {
+            inc.add(&T::tau_adjoint_increment(&xa, xi))
+        }
     }
-    /// `ξ_{k+1} − ξ = (Ad_{τ(−(1−θ)η)} − I) ξ + (1−θ) d^Lτ_{(1−θ)η} ζ`; 0 for θ = 1.
+    /// `ξ_{k+1} − ξ = (Ad_{τ(−(1−θ)hξ)} − I) ξ + (1−θ) d^Lτ_{(1−θ)hξ} ζ`; 0 for θ = 1; the first
+    /// term as in [`LiftedMap::first_velocity_increment`].
     #[inline]
-    fn second_velocity_increment(
-        &self,
-        eta: &G::Algebra,
-        xi: &G::Algebra,
-        zeta: &G::Algebra,
-    ) -> G::Algebra {
+    fn second_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
         let b = 1.0 - self.theta();
         if b == 0.0 {
             return G::Algebra::zeros(G::dim());
         }
-        let xb = eta.scale(b);
-        T::tau_adjoint_increment(&xb.neg(), xi).add(&T::dtau_left(&xb).apply(zeta).scale(b))
+        let xb = xi.scale(b * h);
+        let inc = T::dtau_left(&xb).apply(zeta).scale(b);
+        if T::COMMUTES_WITH_ARGUMENT {
+            inc
+        } else {
+            inc.add(&T::tau_adjoint_increment(&xb.neg(), xi))
+        }
     }
     /// With `a = θh`: `A = Ad_{τ(aξ)} (I − a ad_ξ d^Lτ_{aξ}) + θa E(−aξ; ζ)` (the derivative of
-    /// `Ad_{τ(aξ)} ξ`, and of `−θ d^Lτ_{−aξ} ζ` at fixed ζ with
-    /// `E(x; v) = ∂/∂x (d^Lτ_x v)`, `Tau::dtau_left_derivative`) and `B = −θ d^Lτ_{−aξ}`.
+    /// `Ad_{τ(aξ)} ξ`, which is I where τ commutes with its argument, and of `−θ d^Lτ_{−aξ} ζ` at
+    /// fixed ζ with `E(x; v) = ∂/∂x (d^Lτ_x v)`, `Tau::dtau_left_derivative`) and
+    /// `B = −θ d^Lτ_{−aξ}`.
     fn first_velocity_derivative(
         &self,
         h: f64,
@@ -503,10 +495,14 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
         let a = th * h;
         let xa = xi.scale(a);
         let id = G::Operator::identity(G::dim());
-        let first = T::tau(&xa)
-            .adjoint()
-            .compose(&id.add(&G::ad(xi).compose(&T::dtau_left(&xa)).scale(-a)))
-            .add(&T::dtau_left_derivative(&xa.neg(), zeta).scale(th * a));
+        let transport = if T::COMMUTES_WITH_ARGUMENT {
+            id
+        } else {
+            T::tau(&xa)
+                .adjoint()
+                .compose(&id.add(&G::ad(xi).compose(&T::dtau_left(&xa)).scale(-a)))
+        };
+        let first = transport.add(&T::dtau_left_derivative(&xa.neg(), zeta).scale(th * a));
         (first, T::dtau_left(&xa.neg()).scale(-th))
     }
 }

@@ -120,21 +120,13 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for RightDiscretizationMap<T> {
     fn second_velocity(&self, eta: &G::Algebra, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
         LiftedMap::<G>::second_velocity(&self.left, &eta.neg(), xi, zeta)
     }
-    fn first_velocity_increment(
-        &self,
-        eta: &G::Algebra,
-        xi: &G::Algebra,
-        zeta: &G::Algebra,
-    ) -> G::Algebra {
-        LiftedMap::<G>::first_velocity_increment(&self.left, &eta.neg(), xi, zeta)
+    /// The left map's at −h.
+    fn first_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
+        LiftedMap::<G>::first_velocity_increment(&self.left, -h, xi, zeta)
     }
-    fn second_velocity_increment(
-        &self,
-        eta: &G::Algebra,
-        xi: &G::Algebra,
-        zeta: &G::Algebra,
-    ) -> G::Algebra {
-        LiftedMap::<G>::second_velocity_increment(&self.left, &eta.neg(), xi, zeta)
+    /// The left map's at −h.
+    fn second_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
+        LiftedMap::<G>::second_velocity_increment(&self.left, -h, xi, zeta)
     }
     /// The left map's at −h: `first_velocity(hξ, ξ, ζ) = first_velocity_L((−h)ξ, ξ, ζ)`.
     fn first_velocity_derivative(

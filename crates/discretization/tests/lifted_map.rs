@@ -166,14 +166,14 @@ fn check_tangent_pieces<G: LieGroup, T: Tau<G>>(
     // the increment forms: the same velocities less ξ
     assert_small(
         "ξ + first_velocity_increment = ξ_k",
-        xi.add(&m.first_velocity_increment(&eta, xi, zeta))
+        xi.add(&m.first_velocity_increment(h, xi, zeta))
             .sub(k.fiber())
             .norm_max(),
         1e-12 * s,
     );
     assert_small(
         "ξ + second_velocity_increment = ξ_{k+1}",
-        xi.add(&m.second_velocity_increment(&eta, xi, zeta))
+        xi.add(&m.second_velocity_increment(h, xi, zeta))
             .sub(k1.fiber())
             .norm_max(),
         1e-12 * s,
@@ -200,15 +200,14 @@ fn check_tangent_pieces<G: LieGroup, T: Tau<G>>(
     }
 }
 
-/// The velocity increments keep their accuracy relative to their own size at small steps:
-/// at |η| = |ζ| = 1e-8 (ζ of the size of h f for h ≈ 1e-8) they are within 1e-13 (|η||ξ| + |ζ|)
-/// of the series `ξ_k − ξ = θ ad_η ξ + ½θ² ad_η² ξ − θ(ζ + ½θ ad_η ζ)`,
+/// The velocity increments keep their accuracy relative to their own size at small steps: at
+/// η = hξ with |η| = 1e-8 and |ζ| = 1e-8 (ζ of the size of h f) they are within
+/// 1e-13 (|η||ξ| + |ζ|) of the series `ξ_k − ξ = θ ad_η ξ + ½θ² ad_η² ξ − θ(ζ + ½θ ad_η ζ)`,
 /// `ξ_{k+1} − ξ = −(1−θ) ad_η ξ + ½(1−θ)² ad_η² ξ + (1−θ)(ζ − ½(1−θ) ad_η ζ)` (from
 /// `Ad_{τ(x)} = I + ad_x + ½ad_x² + O(x³)` and `d^Lτ_x = I − ½ad_x + O(x²)` for both τ; the
-/// dropped terms are 1e-16 of the size there). The whole velocities less ξ round at ε|ξ|, 1e-8 of
-/// the size.
+/// dropped terms are 1e-16 of the size there; the ad_η ξ terms vanish along η = hξ). The whole
+/// velocities less ξ round at ε|ξ|, 1e-8 of the size.
 fn check_velocity_increments_at_small_steps<G: LieGroup, T: Tau<G>>(
-    dir: &G::Algebra,
     xi: &G::Algebra,
     zdir: &G::Algebra,
     theta: f64,
@@ -222,7 +221,8 @@ fn check_velocity_increments_at_small_steps<G: LieGroup, T: Tau<G>>(
             v.scale(1e-8 / n)
         }
     };
-    let (eta, zeta) = (unit(dir), unit(zdir));
+    let h = 1e-8 / xi.norm_max().max(f64::MIN_POSITIVE);
+    let (eta, zeta) = (xi.scale(h), unit(zdir));
     let ad = |x: &G::Algebra| G::bracket(&eta, x);
     let b = 1.0 - theta;
     let first = ad(xi)
@@ -236,18 +236,109 @@ fn check_velocity_increments_at_small_steps<G: LieGroup, T: Tau<G>>(
     let size = eta.norm_max() * xi.norm_max() + zeta.norm_max();
     assert_small(
         "first_velocity_increment at |η| = 1e-8",
-        m.first_velocity_increment(&eta, xi, &zeta)
+        m.first_velocity_increment(h, xi, &zeta)
             .sub(&first)
             .norm_max(),
         1e-13 * size,
     );
     assert_small(
         "second_velocity_increment at |η| = 1e-8",
-        m.second_velocity_increment(&eta, xi, &zeta)
+        m.second_velocity_increment(h, xi, &zeta)
             .sub(&second)
             .norm_max(),
         1e-13 * size,
     );
+}
+
+/// A τ map on SO(3) that does not commute with its argument: `τ(ξ) = k(ξ) exp(ξ) k(ξ)⁻¹` with
+/// `k(ξ) = exp(|ξ|² a)`, a fixed (k even and k(0) = e, so τ(0) = e, dτ₀ = id and
+/// τ(ξ)τ(−ξ) = e hold), but `Ad_{τ(ξ)} ξ = Ad_k Ad_{exp ξ} Ad_{k⁻¹} ξ ≠ ξ`: the maps' general path,
+/// which forms `(Ad_{τ(sη)} − I) ξ` (`Tau::tau_adjoint_increment`, its provided matrix form here)
+/// and the transport term of the derivative. Its tangent is central differences of τ, its inverse
+/// `d^Lτ_ξ = Ad_k ((Ad_{exp(−ξ)} − I) 2aξᵀ + d^L exp_ξ)` (from τ⁻¹dτ with k⁻¹dk = 2(ξ·δ) a; checked
+/// against central differences below), its inverse a fixed-point iteration ξ = log(k(ξ)⁻¹ g k(ξ)).
+#[derive(Debug, Clone, Copy, Default)]
+struct Conjugated;
+
+impl Conjugated {
+    const A: [f64; 3] = [0.3, -0.2, 0.5];
+    fn k(xi: &nalgebra::Vector3<f64>) -> So3 {
+        So3::exp(&(nalgebra::Vector3::from(Self::A) * xi.norm_squared()))
+    }
+}
+
+impl Tau<So3> for Conjugated {
+    const NAME: &'static str = "conjugated-exp";
+    fn tau(xi: &nalgebra::Vector3<f64>) -> So3 {
+        let k = Self::k(xi);
+        k.compose(&So3::exp(xi)).compose(&k.inverse())
+    }
+    fn tau_inv(g: &So3) -> Result<nalgebra::Vector3<f64>, lie_groups::LieError> {
+        let mut xi = g.log()?;
+        for _ in 0..60 {
+            let k = Self::k(&xi);
+            xi = k.inverse().compose(g).compose(&k).log()?;
+        }
+        Ok(xi)
+    }
+    fn dtau_left(xi: &nalgebra::Vector3<f64>) -> nalgebra::Matrix3<f64> {
+        let a = nalgebra::Vector3::from(Self::A);
+        let back = So3::exp(&-xi).adjoint() - nalgebra::Matrix3::identity();
+        Self::k(xi).adjoint() * (back * (a * 2.0) * xi.transpose() + So3::dexp_left(xi))
+    }
+    fn dtau_left_inv(xi: &nalgebra::Vector3<f64>) -> nalgebra::Matrix3<f64> {
+        Self::dtau_left(xi)
+            .try_inverse()
+            .expect("d^Lτ invertible near 0")
+    }
+}
+
+/// The general path, on the non-commuting τ: the increments are the whole velocities less ξ
+/// along η = hξ (1e-14 of their size; here the Ad terms are not zero), and the
+/// derivative A at ζ = 0, `Ad_{τ(aξ)}(I − a ad_ξ d^Lτ_{aξ})`, matches central differences of
+/// ξ ↦ first_velocity(hξ, ξ, 0) (which only applies τ's matrix) to 1e-7, every θ.
+fn check_general_path(xi: &nalgebra::Vector3<f64>, zeta: &nalgebra::Vector3<f64>, theta: f64) {
+    let m = map::<So3, Conjugated>(theta);
+    assert_small(
+        "d^Lτ of the conjugated exp = central differences",
+        (Conjugated::dtau_left(xi) - lie_groups::testing::fd_left::<So3>(Conjugated::tau, xi))
+            .amax(),
+        1e-8,
+    );
+    let h = 0.3;
+    let eta = xi.scale(h);
+    let size = h * xi.amax() * xi.amax() + zeta.amax();
+    let first = m.first_velocity(&eta, xi, zeta) - xi;
+    let second = m.second_velocity(&eta, xi, zeta) - xi;
+    assert_small(
+        "first_velocity_increment, τ not commuting",
+        (m.first_velocity_increment(h, xi, zeta) - first).amax(),
+        1e-14 * size,
+    );
+    assert_small(
+        "second_velocity_increment, τ not commuting",
+        (m.second_velocity_increment(h, xi, zeta) - second).amax(),
+        1e-14 * size,
+    );
+    // the Ad term is there to be tested: first with ζ = 0 is (Ad_{τ(θhξ)} − I) ξ alone, 1e5
+    // times the tolerance above at least
+    let zero = nalgebra::Vector3::zeros();
+    let transported = m.first_velocity_increment(h, xi, &zero).amax();
+    if theta > 0.2 && xi.amax() > 0.3 {
+        assert!(
+            transported > 1e-9 * xi.amax(),
+            "the Ad term vanishes ({transported:e}): the test would not see it"
+        );
+    }
+    let (a, _) = m.first_velocity_derivative(h, xi, &zero);
+    for i in 0..3 {
+        let dir = nalgebra::Vector3::from_fn(|j, _| if i == j { 1.0 } else { 0.0 });
+        let fd = fd_vector(|t| {
+            let x = xi.axpy(t, &dir);
+            m.first_velocity(&x.scale(h), &x, &zero)
+        });
+        assert_small("A, τ not commuting", (a * dir - fd).amax(), 1e-7);
+    }
 }
 
 macro_rules! lifted_map_suite {
@@ -282,6 +373,18 @@ macro_rules! lifted_map_suite {
 }
 
 use lie_groups::{Cayley, ExpMap, Se2, Se3, So3, SoN};
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(24))]
+    #[test]
+    fn the_general_path_forms_the_ad_terms_of_a_non_commuting_tau(
+        w in lie_groups::testing::algebra::<So3>(1.0),
+        u in lie_groups::testing::algebra::<So3>(0.3),
+        th in proptest::prop_oneof![proptest::prelude::Just(0.0), proptest::prelude::Just(0.5), proptest::prelude::Just(1.0), 0.0..1.0f64],
+    ) {
+        check_general_path(&w, &u, th);
+    }
+}
+
 // (name, group, τ, ∂μ̄/∂η checked as exact at large η, E τ exact: the Euler–Poincaré derivative)
 lifted_map_suite!(so3_exp, So3, ExpMap, true, true);
 lifted_map_suite!(so3_cayley, So3, Cayley, true, true);
@@ -304,8 +407,8 @@ macro_rules! increment_suite {
             proptest! {
                 #![proptest_config(ProptestConfig::with_cases(48))]
                 #[test]
-                fn velocity_increments_keep_their_relative_accuracy_at_small_steps(dir in algebra::<G>(1.0), xi in algebra::<G>(2.0), zeta in algebra::<G>(1.0), th in prop_oneof![Just(0.0), Just(0.5), Just(1.0), 0.0..1.0f64]) {
-                    check_velocity_increments_at_small_steps::<G, $T>(&dir, &xi, &zeta, th);
+                fn velocity_increments_keep_their_relative_accuracy_at_small_steps(xi in algebra::<G>(2.0), zeta in algebra::<G>(1.0), th in prop_oneof![Just(0.0), Just(0.5), Just(1.0), 0.0..1.0f64]) {
+                    check_velocity_increments_at_small_steps::<G, $T>(&xi, &zeta, th);
                 }
             }
         }

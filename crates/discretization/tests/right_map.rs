@@ -75,26 +75,28 @@ fn check_momentum_map<G: LieGroup, T: Tau<G>>(
     );
 }
 
-/// The velocity increments are the right map's velocities less ξ (the left map's at −η).
+/// The velocity increments are the right map's velocities less ξ at η = hξ (the left map's at
+/// −h).
 fn check_velocity_increments<G: LieGroup, T: Tau<G>>(
-    eta: &G::Algebra,
     xi: &G::Algebra,
     zeta: &G::Algebra,
     theta: f64,
 ) {
     let m = map::<G, T>(theta);
+    let h = 0.3;
+    let eta = xi.scale(h);
     let s = 1.0 + xi.norm() + zeta.norm();
     assert_small(
         "ξ + first_velocity_increment = first_velocity",
-        xi.add(&m.first_velocity_increment(eta, xi, zeta))
-            .sub(&m.first_velocity(eta, xi, zeta))
+        xi.add(&m.first_velocity_increment(h, xi, zeta))
+            .sub(&m.first_velocity(&eta, xi, zeta))
             .norm_max(),
         1e-14 * s,
     );
     assert_small(
         "ξ + second_velocity_increment = second_velocity",
-        xi.add(&m.second_velocity_increment(eta, xi, zeta))
-            .sub(&m.second_velocity(eta, xi, zeta))
+        xi.add(&m.second_velocity_increment(h, xi, zeta))
+            .sub(&m.second_velocity(&eta, xi, zeta))
             .norm_max(),
         1e-14 * s,
     );
@@ -146,8 +148,8 @@ macro_rules! right_map_suite {
                     check_momentum_map::<G, $T>(&a, &eta, &mu, th);
                 }
                 #[test]
-                fn velocity_increments_are_the_velocities_less_xi(eta in algebra::<G>(0.5), xi in algebra::<G>(1.0), zeta in algebra::<G>(0.3), th in theta()) {
-                    check_velocity_increments::<G, $T>(&eta, &xi, &zeta, th);
+                fn velocity_increments_are_the_velocities_less_xi(xi in algebra::<G>(1.5), zeta in algebra::<G>(0.3), th in theta()) {
+                    check_velocity_increments::<G, $T>(&xi, &zeta, th);
                 }
                 #[test]
                 fn base_momentum_derivative_matches_finite_differences(eta in algebra::<G>(if $exact { 0.5 } else { 0.05 }), mu in algebra::<G>(1.0), th in theta()) {

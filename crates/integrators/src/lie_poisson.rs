@@ -315,7 +315,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         let solution = solve::<G, _>(
             &self.config,
             h,
-            0.0,
+            || 0.0,
             guess,
             &mut chord,
             prior,

@@ -169,7 +169,8 @@ pub struct Solution<A, E> {
 /// `max(tolerance · ‖ξ‖_max, 8ε · scale)`, or when the update no longer changes ξ in floating
 /// point (Δξ = 0 or below half an ulp of ξ), where further iterations would repeat the last one.
 ///
-/// `scale` is the size of the data the residual is computed from, where ‖ξ‖ may be far smaller:
+/// `scale` gives the size of the data the residual is computed from, where ‖ξ‖ may be far smaller
+/// (called at most once, and only by a step that does not stop on its tolerance at once):
 /// the tolerance stays relative to ‖ξ‖, but no iteration can resolve ξ better than the rounding
 /// of that data, 8ε·scale (8 ulps), which is therefore also a floor of the stopping test; updates
 /// below it measure no contraction, and the finite-difference steps are taken relative to
@@ -183,7 +184,7 @@ pub struct Solution<A, E> {
 pub fn solve<G: LieGroup, E>(
     config: &SolverConfig,
     step: f64,
-    scale: f64,
+    scale: impl FnOnce() -> f64,
     mut xi: G::Algebra,
     chord: &mut Option<G::Operator>,
     prior: Option<f64>,
@@ -191,6 +192,7 @@ pub fn solve<G: LieGroup, E>(
     mut jacobian: impl FnMut(&G::Algebra, &E) -> G::Operator,
 ) -> Result<Solution<G::Algebra, E>, IntegratorError> {
     let n = G::dim();
+    let mut scale = Lazy::new(scale);
     let mut previous_update = f64::INFINITY;
     let mut contraction = 0.0f64;
     let mut bound = 0.0f64;
@@ -227,7 +229,7 @@ pub fn solve<G: LieGroup, E>(
                 }
             },
             SolverKind::NewtonFiniteDifference => {
-                let size = xi.norm_max().max(scale).max(f64::MIN_POSITIVE.sqrt());
+                let size = xi.norm_max().max(scale.get()).max(f64::MIN_POSITIVE.sqrt());
                 // Central differences: error O(δ²) + O(ε/δ); δ = ε^{1/3} ‖ξ‖ balances them.
                 let d = 6.055e-6 * size;
                 let j = operator_from_columns::<G>(n, |k| {
@@ -256,7 +258,7 @@ pub fn solve<G: LieGroup, E>(
             // An update at the rounding of ξ (a few ulps) measures the rounding, not the
             // contraction: it neither counts against the matrix nor claims ρ ≈ 0 for the next
             // step's prior, which gets the bound ρ ≤ max(‖Δξ_k‖, ε‖ξ‖)/‖Δξ_{k−1}‖ instead.
-            let rounding = f64::EPSILON * xi.norm_max().max(scale);
+            let rounding = f64::EPSILON * xi.norm_max().max(scale.get());
             if dn > ROUNDING_UPDATES * rounding {
                 contraction = contraction.max(dn / previous_update);
             }
@@ -274,8 +276,10 @@ pub fn solve<G: LieGroup, E>(
         // Below the rounding of the data (ROUNDING_UPDATES ulps of `scale`) the residual cannot
         // resolve ξ any better: there the iteration is as converged as floating point allows
         // (it used to cycle or creep into NoConvergence where ξ is far smaller than its data).
-        let floor = ROUNDING_UPDATES * f64::EPSILON * scale;
-        if unchanged || error_estimate <= (tolerance * xi.norm_max()).max(floor) {
+        if unchanged
+            || error_estimate <= tolerance * xi.norm_max()
+            || error_estimate <= ROUNDING_UPDATES * f64::EPSILON * scale.get()
+        {
             return Ok(Solution {
                 xi,
                 iterations: it,
@@ -296,6 +300,30 @@ pub fn solve<G: LieGroup, E>(
         iterations: config.max_iterations,
         residual: r.norm_max(),
     })
+}
+
+/// A value computed at its first use only ([`solve`]'s `scale`: most steps stop on their
+/// tolerance before needing it).
+struct Lazy<F> {
+    f: Option<F>,
+    value: f64,
+}
+
+impl<F: FnOnce() -> f64> Lazy<F> {
+    #[inline(always)]
+    fn new(f: F) -> Self {
+        Self {
+            f: Some(f),
+            value: 0.0,
+        }
+    }
+    #[inline(always)]
+    fn get(&mut self) -> f64 {
+        if let Some(f) = self.f.take() {
+            self.value = f();
+        }
+        self.value
+    }
 }
 
 /// Whether two algebra vectors are bitwise equal.
@@ -333,7 +361,7 @@ mod tests {
         let solution = solve::<So3, Vector3<f64>>(
             &config,
             0.1,
-            0.0,
+            || 0.0,
             xi0,
             &mut None,
             None,
@@ -374,7 +402,7 @@ mod tests {
             let solution = solve::<So3, ()>(
                 &config,
                 0.1,
-                0.0,
+                || 0.0,
                 target + Vector3::repeat(delta),
                 &mut None,
                 None,
@@ -412,7 +440,7 @@ mod tests {
             solve::<So3, ()>(
                 &config,
                 0.1,
-                scale,
+                || scale,
                 start,
                 &mut None,
                 None,
@@ -446,7 +474,7 @@ mod tests {
         let solution = solve::<So3, ()>(
             &config,
             0.1,
-            0.0,
+            || 0.0,
             Vector3::zeros(),
             &mut None,
             None,

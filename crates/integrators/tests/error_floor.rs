@@ -6,8 +6,8 @@
 //! R₀ = exp((0.3, −0.5, 0.8)^), T = 10, against the exact flow ([`ExactFreeBody`], one step to T);
 //! error = max(‖Π − Π_ref‖_max, ‖R − R_ref‖_max). Kahan–Li 8 ∘ (θ = ½).
 //!
-//! Measured (this file's output): h = 0.1: EP 1.0e-14 (Cayley), 9.4e-15 (exp), LP 9.6e-15,
-//! 2.4e-15; h = 0.05: EP 1.8e-15, 3.3e-15, LP 2.4e-15, 1.9e-15; every solver kind 1.8–2.8e-15. Before the increment form EP
+//! Measured (this file's output): h = 0.1: EP 1.0e-14 (Cayley), 9.7e-15 (exp), LP 9.6e-15,
+//! 2.4e-15; h = 0.05: EP 2.5e-15, 3.2e-15, LP 2.4e-15, 1.9e-15; every solver kind 2.0–2.8e-15. Before the increment form EP
 //! stalled at 4.4e-12 (h = 0.1) and 2.4e-12 (h = 0.05): it solved for ξ itself, to 1e-14|ξ| per
 //! sub-step, with velocities rounded at ε|ξ|, and its Newton matrix dropped an O(h²) term, so
 //! the solver's stopping errors were biased and added up over the 17 sub-steps of each step.

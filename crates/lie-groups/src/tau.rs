@@ -20,6 +20,11 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     /// Whether s ↦ τ(sξ) is a one-parameter subgroup, τ(sξ) τ(tξ) = τ((s+t)ξ) (true for exp only).
     /// Discretization maps use it: then τ(θξ) τ((1−θ)ξ) = τ(ξ) and R̃_d inverts in closed form.
     const ONE_PARAMETER_SUBGROUP: bool = false;
+    /// Whether τ(ξ) commutes with ξ: `Ad_{τ(ξ)} ξ = ξ` for every ξ (true for exp and Cayley,
+    /// functions of ξ̂; the axioms of τ do not imply it — `k(ξ) exp(ξ) k(ξ)⁻¹` with k even and
+    /// k(0) = e satisfies them). Tangent lifts use it: along the field's step η = hξ the terms
+    /// `(Ad_{τ(sη)} − I) ξ` of the Euler–Poincaré step then vanish exactly and are not formed.
+    const COMMUTES_WITH_ARGUMENT: bool = false;
     /// A radius r such that `τ⁻¹(τ(ξ)) = ξ` holds to round-off (relative error ≤ 1e-8) for every
     /// ‖ξ‖ ≤ r; 0 where no such bound is known. Integrators skip their domain check (the round trip)
     /// inside it. [`ExpMap`] and [`Cayley`] take it from [`LieGroup::EXP_INVERTIBLE_RADIUS`] and
@@ -151,6 +156,8 @@ pub struct ExpMap;
 impl<G: LieGroup> Tau<G> for ExpMap {
     const NAME: &'static str = "exp";
     const ONE_PARAMETER_SUBGROUP: bool = true;
+    /// exp(ξ) = Σ ξ̂ᵏ/k! commutes with ξ̂.
+    const COMMUTES_WITH_ARGUMENT: bool = true;
     const INVERTIBLE_RADIUS: f64 = G::EXP_INVERTIBLE_RADIUS;
     #[inline]
     fn tau(xi: &G::Algebra) -> G {
@@ -297,6 +304,8 @@ pub struct Cayley;
 
 impl<G: CayleyGroup> Tau<G> for Cayley {
     const NAME: &'static str = "cayley";
+    /// cay(ξ) = (I − ξ̂/2)⁻¹(I + ξ̂/2) commutes with ξ̂.
+    const COMMUTES_WITH_ARGUMENT: bool = true;
     const INVERTIBLE_RADIUS: f64 = G::CAY_INVERTIBLE_RADIUS;
     #[inline]
     fn tau(xi: &G::Algebra) -> G {
