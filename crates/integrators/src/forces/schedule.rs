@@ -62,6 +62,24 @@ impl Schedule {
     pub fn knots(&self) -> usize {
         self.times.len()
     }
+    /// `f(u(t))`, with u(t) evaluated into a stack buffer when [`Self::dim`] ≤
+    /// [`Self::STACK_DIM`] (no allocation; a heap buffer beyond).
+    #[inline]
+    pub fn eval_with<R>(&self, t: f64, f: impl FnOnce(&[f64]) -> R) -> R {
+        let n = self.dim();
+        let mut buf = [0.0; Self::STACK_DIM];
+        if n <= buf.len() {
+            self.eval_into(t, &mut buf[..n]);
+            f(&buf[..n])
+        } else {
+            let mut v = vec![0.0; n];
+            self.eval_into(t, &mut v);
+            f(&v)
+        }
+    }
+    /// Schedules of at most this many components evaluate without allocating
+    /// ([`Self::eval_with`]).
+    pub const STACK_DIM: usize = 16;
     /// `u(t)` into `out` (length [`Self::dim`]); no allocation.
     pub fn eval_into(&self, t: f64, out: &mut [f64]) {
         let n = self.times.len();
