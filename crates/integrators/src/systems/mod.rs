@@ -7,14 +7,17 @@
 //! | [`RigidBodySe3`] | SE(3) | free, or MacCullagh central gravity | energy, `RΠ + x × RP` |
 //! | [`PlanarBody`] | SE(2) | spring `½k\|x + Rc\|²`, gravity `−m⟨γ, x⟩` | energy, momentum maps |
 //! | [`GeneralizedRigidBody`] | SO(n) | — | energy, `tr(M^{2k})` |
+//! | [`Gyrostat`] | SO(3) × ℝᴷ | — (wheel torques: inputs) | `RΠ` and \|Π\|² under any wheel torque |
 
 pub mod geodesic_so_n;
+pub mod gyrostat;
 pub mod heavy_top;
 pub mod planar_body_se2;
 mod rigid_body;
 pub mod rigid_body_se3;
 
 pub use geodesic_so_n::GeneralizedRigidBody;
+pub use gyrostat::{Gyrostat, GyrostatAlgebra, GyrostatGroup};
 pub use heavy_top::HeavyTop;
 pub use planar_body_se2::PlanarBody;
 pub use rigid_body::RigidBody;
