@@ -8,6 +8,7 @@
 //! | [`PlanarBody`] | SE(2) | spring `½k\|x + Rc\|²`, gravity `−m⟨γ, x⟩` | energy, momentum maps |
 //! | [`GeneralizedRigidBody`] | SO(n) | — | energy, `tr(M^{2k})` |
 //! | [`Gyrostat`] | SO(3) × ℝᴷ | — (wheel torques: inputs) | `RΠ` and \|Π\|² under any wheel torque |
+//! | [`UnderwaterVehicle`] | SE(3) | restoring `(W − B)x₃ + (W r_G − B r_B)·Rᵀe₃` | energy, `L₃`, `(RP)₁,₂` |
 
 pub mod geodesic_so_n;
 pub mod gyrostat;
@@ -15,6 +16,7 @@ pub mod heavy_top;
 pub mod planar_body_se2;
 mod rigid_body;
 pub mod rigid_body_se3;
+pub mod underwater_vehicle;
 
 pub use geodesic_so_n::GeneralizedRigidBody;
 pub use gyrostat::{Gyrostat, GyrostatAlgebra, GyrostatGroup};
@@ -22,3 +24,4 @@ pub use heavy_top::HeavyTop;
 pub use planar_body_se2::PlanarBody;
 pub use rigid_body::RigidBody;
 pub use rigid_body_se3::RigidBodySe3;
+pub use underwater_vehicle::UnderwaterVehicle;
