@@ -9,11 +9,13 @@
 //! | [`GeneralizedRigidBody`] | SO(n) | — | energy, `tr(M^{2k})` |
 //! | [`Gyrostat`] | SO(3) × ℝᴷ | — (wheel torques: inputs) | `RΠ` and \|Π\|² under any wheel torque |
 //! | [`UnderwaterVehicle`] | SE(3) | restoring `(W − B)x₃ + (W r_G − B r_B)·Rᵀe₃` | energy, `L₃`, `(RP)₁,₂` |
+//! | [`Quadrotor`] | SE(3) | `m g x₃` (thrust, torques: inputs) | energy, `L₃`, `(RP)₁,₂` unforced |
 
 pub mod geodesic_so_n;
 pub mod gyrostat;
 pub mod heavy_top;
 pub mod planar_body_se2;
+pub mod quadrotor;
 mod rigid_body;
 pub mod rigid_body_se3;
 pub mod underwater_vehicle;
@@ -22,6 +24,7 @@ pub use geodesic_so_n::GeneralizedRigidBody;
 pub use gyrostat::{Gyrostat, GyrostatAlgebra, GyrostatGroup};
 pub use heavy_top::HeavyTop;
 pub use planar_body_se2::PlanarBody;
+pub use quadrotor::Quadrotor;
 pub use rigid_body::RigidBody;
 pub use rigid_body_se3::RigidBodySe3;
 pub use underwater_vehicle::UnderwaterVehicle;
