@@ -3,7 +3,7 @@
 //! | system | group | potential | conserved |
 //! |---|---|---|---|
 //! | [`RigidBody`] | SO(3) | — | energy, \|Π\|² |
-//! | [`HeavyTop`] | SO(3) | `m g ⟨Rχ, e₃⟩` | energy, `⟨RΠ, e₃⟩` (Lagrange top: also Π₃) |
+//! | [`HeavyTop`] (= [`Pendulum3d`]) | SO(3) | `m g ⟨Rχ, e₃⟩` | energy, `⟨RΠ, e₃⟩` (Lagrange top: also Π₃) |
 //! | [`RigidBodySe3`] | SE(3) | free, or MacCullagh central gravity | energy, `RΠ + x × RP` |
 //! | [`PlanarBody`] | SE(2) | spring `½k\|x + Rc\|²`, gravity `−m⟨γ, x⟩` | energy, momentum maps |
 //! | [`GeneralizedRigidBody`] | SO(n) | — | energy, `tr(M^{2k})` |
@@ -14,6 +14,7 @@
 pub mod geodesic_so_n;
 pub mod gyrostat;
 pub mod heavy_top;
+pub mod pendulum_3d;
 pub mod planar_body_se2;
 pub mod quadrotor;
 mod rigid_body;
@@ -23,6 +24,7 @@ pub mod underwater_vehicle;
 pub use geodesic_so_n::GeneralizedRigidBody;
 pub use gyrostat::{Gyrostat, GyrostatAlgebra, GyrostatGroup};
 pub use heavy_top::HeavyTop;
+pub use pendulum_3d::Pendulum3d;
 pub use planar_body_se2::PlanarBody;
 pub use quadrotor::Quadrotor;
 pub use rigid_body::RigidBody;
