@@ -10,7 +10,9 @@
 //! | [`Gyrostat`] | SO(3) × ℝᴷ | — (wheel torques: inputs) | `RΠ` and \|Π\|² under any wheel torque |
 //! | [`UnderwaterVehicle`] | SE(3) | restoring `(W − B)x₃ + (W r_G − B r_B)·Rᵀe₃` | energy, `L₃`, `(RP)₁,₂` |
 //! | [`Quadrotor`] | SE(3) | `m g x₃` (thrust, torques: inputs) | energy, `L₃`, `(RP)₁,₂` unforced |
+//! | [`CoupledBodies`] | SE(3)ᴺ | springs between attachment points | energy, total momentum |
 
+pub mod coupled_bodies;
 pub mod geodesic_so_n;
 pub mod gyrostat;
 pub mod heavy_top;
@@ -21,6 +23,7 @@ mod rigid_body;
 pub mod rigid_body_se3;
 pub mod underwater_vehicle;
 
+pub use coupled_bodies::{CoupledBodies, Spring};
 pub use geodesic_so_n::GeneralizedRigidBody;
 pub use gyrostat::{Gyrostat, GyrostatAlgebra, GyrostatGroup};
 pub use heavy_top::HeavyTop;
