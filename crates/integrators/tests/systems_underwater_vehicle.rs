@@ -18,18 +18,10 @@ use integrators::{Integrator, LiePoisson, System};
 use lie_groups::{Cayley, ExpMap, LieGroup, Se3, So3, Tau};
 use nalgebra::{DVector, Matrix3, Matrix6, Vector3, Vector6};
 
-/// The rigid-body mass matrix of a body of mass m and inertia I_G about its centre of gravity at
-/// r_G, about the body origin, in (ω, v) ordering: `[[I_G − m r̂_G², m r̂_G], [−m r̂_G, m I]]`
-/// (from `T = ½ m|v + Ω × r_G|² + ½ ΩᵀI_GΩ`).
+/// The rigid-body mass matrix (`UnderwaterVehicle::rigid_body_mass_matrix`, pinned against
+/// Fossen's eq. 3.44 in `fossen_ordering_is_reordered_to_angular_first`).
 fn rigid_body_mass(m: f64, ig: Matrix3<f64>, rg: Vector3<f64>) -> Matrix6<f64> {
-    let s = rg.cross_matrix();
-    let mut mm = Matrix6::zeros();
-    mm.fixed_view_mut::<3, 3>(0, 0).copy_from(&(ig - s * s * m));
-    mm.fixed_view_mut::<3, 3>(0, 3).copy_from(&(s * m));
-    mm.fixed_view_mut::<3, 3>(3, 0).copy_from(&(-s * m));
-    mm.fixed_view_mut::<3, 3>(3, 3)
-        .copy_from(&(Matrix3::identity() * m));
-    mm
+    UnderwaterVehicle::rigid_body_mass_matrix(m, &ig, &rg)
 }
 
 const RG: Vector3<f64> = Vector3::new(0.02, -0.01, -0.05);

@@ -58,9 +58,21 @@ impl Schedule {
     pub fn dim(&self) -> usize {
         self.values[0].len()
     }
+    /// The knot times (strictly increasing; one for a constant).
+    pub fn times(&self) -> &[f64] {
+        &self.times
+    }
     /// The number of knots (1 for a constant).
     pub fn knots(&self) -> usize {
         self.times.len()
+    }
+    /// The largest Euclidean norm |u| of the values, which bounds |u(t)| for every t (the
+    /// interpolation is convex).
+    pub fn max_abs(&self) -> f64 {
+        self.values
+            .iter()
+            .map(|v| v.iter().map(|x| x * x).sum::<f64>().sqrt())
+            .fold(0.0, f64::max)
     }
     /// `f(u(t))`, with u(t) evaluated into a stack buffer when [`Self::dim`] ≤
     /// [`Self::STACK_DIM`] (no allocation; a heap buffer beyond).
@@ -137,5 +149,11 @@ mod tests {
         .contains("values[1]"));
         assert!(msg(Schedule::new(vec![0.0], vec![vec![f64::INFINITY]])).contains("values[0][0]"));
         assert!(Schedule::new(vec![], vec![]).is_err());
+    }
+
+    #[test]
+    fn max_abs_is_the_largest_value_norm() {
+        let s = Schedule::new(vec![0.0, 1.0], vec![vec![3.0, 4.0], vec![0.0, -1.0]]).unwrap();
+        assert_eq!(s.max_abs(), 5.0);
     }
 }

@@ -162,6 +162,25 @@ impl UnderwaterVehicle {
         self.net_weight = weight - buoyancy;
         Ok(self)
     }
+    /// The rigid-body part M_RB of the mass matrix, (ω, v) ordering, about the body origin, of a
+    /// body of mass m and inertia 𝕀_G about its centre of gravity r_G:
+    /// `M_RB = [[𝕀_G − m r̂_G², m r̂_G], [−m r̂_G, m I₃]]`, from
+    /// `T = ½ m |v + Ω × r_G|² + ½ Ωᵀ𝕀_GΩ` (Fossen 2011, eq. 3.44, reordered by [`angular_first`]).
+    pub fn rigid_body_mass_matrix(
+        mass: f64,
+        inertia_at_centre_of_gravity: &Matrix3<f64>,
+        centre_of_gravity: &Vector3<f64>,
+    ) -> Matrix6<f64> {
+        let s = centre_of_gravity.cross_matrix();
+        let mut m = Matrix6::zeros();
+        m.fixed_view_mut::<3, 3>(0, 0)
+            .copy_from(&(inertia_at_centre_of_gravity - s * s * mass));
+        m.fixed_view_mut::<3, 3>(0, 3).copy_from(&(s * mass));
+        m.fixed_view_mut::<3, 3>(3, 0).copy_from(&(-s * mass));
+        m.fixed_view_mut::<3, 3>(3, 3)
+            .copy_from(&(Matrix3::identity() * mass));
+        m
+    }
     /// The mass matrix M ((ω, v) ordering).
     pub fn mass_matrix(&self) -> &Matrix6<f64> {
         self.kinetic.inertia()
