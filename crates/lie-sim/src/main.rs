@@ -39,6 +39,7 @@ fn show_progress() -> bool {
 mod bounds;
 mod choose;
 mod error;
+mod forces;
 mod invariants;
 mod ladder;
 mod output;
@@ -48,6 +49,7 @@ mod scene;
 mod sim;
 mod sweep;
 mod trade;
+mod vehicles;
 
 use clap::{Args, Parser, Subcommand};
 use error::SimError;
