@@ -359,14 +359,11 @@ fn reference(t_end: f64) -> DVector<f64> {
     let bodies = bodies3();
     let springs = springs3();
     let (g0, mu0) = start3();
-    let mut y0 = DVector::zeros(54);
-    for k in 0..3 {
-        let o = 18 * k;
-        y0.rows_mut(o, 9)
-            .copy_from_slice(g0.parts[k].rotation().as_matrix().as_slice());
-        y0.rows_mut(o + 9, 3).copy_from(g0.parts[k].translation());
-        y0.rows_mut(o + 12, 6).copy_from(&mu0.parts[k]);
-    }
+    let y0 = DVector::from_vec(
+        (0..3)
+            .flat_map(|k| pack_se3(&g0.parts[k], &mu0.parts[k]))
+            .collect(),
+    );
     let iinv: Vec<Matrix3<f64>> = bodies
         .iter()
         .map(|b| b.inertia().try_inverse().unwrap())
@@ -419,10 +416,7 @@ fn three_bodies_converge_at_order_2_to_an_independent_rk4() {
         }
         let (g, mu) = (integ.configuration().unwrap(), integ.momentum());
         (0..3).fold(0.0f64, |e, k| {
-            let o = 18 * k;
-            let r = Matrix3::from_column_slice(&yref.as_slice()[o..o + 9]);
-            let x = Vector3::from_column_slice(&yref.as_slice()[o + 9..o + 12]);
-            let m = Vector6::from_column_slice(&yref.as_slice()[o + 12..o + 18]);
+            let (r, x, m) = unpack_se3(&yref.as_slice()[18 * k..]);
             e.max((g.parts[k].rotation().as_matrix() - r).amax())
                 .max((g.parts[k].translation() - x).amax())
                 .max((mu.parts[k] - m).amax())

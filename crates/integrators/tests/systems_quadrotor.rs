@@ -263,15 +263,10 @@ fn inputs_at(t: f64) -> (f64, Vector3<f64>) {
 fn reference(t_end: f64) -> DVector<f64> {
     let iinv = inertia().try_inverse().unwrap();
     let (g0, mu0) = start();
-    let mut y0 = DVector::zeros(18);
-    y0.rows_mut(0, 9)
-        .copy_from_slice(g0.rotation().as_matrix().as_slice());
-    y0.rows_mut(9, 3).copy_from(g0.translation());
-    y0.rows_mut(12, 6).copy_from(&mu0);
+    let y0 = DVector::from_vec(pack_se3(&g0, &mu0));
     let f = |t: f64, y: &DVector<f64>| {
-        let r = Matrix3::from_column_slice(&y.as_slice()[0..9]);
-        let pi = Vector3::from_column_slice(&y.as_slice()[12..15]);
-        let p = Vector3::from_column_slice(&y.as_slice()[15..18]);
+        let (r, _, mu) = unpack_se3(y.as_slice());
+        let (pi, p) = (mu.fixed_rows::<3>(0), mu.fixed_rows::<3>(3));
         let (thrust, tau) = inputs_at(t);
         let om = iinv * pi;
         let mut dy = DVector::zeros(18);
@@ -294,9 +289,7 @@ fn reference(t_end: f64) -> DVector<f64> {
 fn manoeuvre_converges_to_an_independent_rk4_at_the_methods_orders() {
     let t_end = 3.0;
     let yref = reference(t_end);
-    let r_ref = Matrix3::from_column_slice(&yref.as_slice()[0..9]);
-    let x_ref = Vector3::from_column_slice(&yref.as_slice()[9..12]);
-    let mu_ref = Vector6::from_column_slice(&yref.as_slice()[12..18]);
+    let (r_ref, x_ref, mu_ref) = unpack_se3(yref.as_slice());
     let (g0, mu0) = start();
     let forced = || Forced::new(quad(), manoeuvre());
     let error = |mut integ: Box<dyn Integrator<Group = Se3>>, h: f64| {

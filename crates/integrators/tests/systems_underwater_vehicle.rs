@@ -423,14 +423,9 @@ fn reference(m: &Matrix6<f64>, with_drag: bool, t_end: f64) -> DVector<f64> {
         (Vector6::zeros(), Vector6::zeros())
     };
     let (g0, mu0) = start();
-    let mut y0 = DVector::zeros(18);
-    y0.rows_mut(0, 9)
-        .copy_from_slice(g0.rotation().as_matrix().as_slice());
-    y0.rows_mut(9, 3).copy_from(g0.translation());
-    y0.rows_mut(12, 6).copy_from(&mu0);
+    let y0 = DVector::from_vec(pack_se3(&g0, &mu0));
     let f = |_t: f64, y: &DVector<f64>| {
-        let r = Matrix3::from_column_slice(&y.as_slice()[0..9]);
-        let mu = Vector6::from_column_slice(&y.as_slice()[12..18]);
+        let (r, _, mu) = unpack_se3(y.as_slice());
         let xi = m_inv * mu;
         let drag = -xi.component_mul(&dl) - dq.component_mul(&xi.map(|x| x.abs() * x));
         let (om, v) = (xi.fixed_rows::<3>(0), xi.fixed_rows::<3>(3));
@@ -451,9 +446,7 @@ fn reference(m: &Matrix6<f64>, with_drag: bool, t_end: f64) -> DVector<f64> {
 
 fn error_against(yref: &DVector<f64>, integ: &dyn Integrator<Group = Se3>) -> f64 {
     let g = integ.configuration().unwrap();
-    let r = Matrix3::from_column_slice(&yref.as_slice()[0..9]);
-    let x = Vector3::from_column_slice(&yref.as_slice()[9..12]);
-    let mu = Vector6::from_column_slice(&yref.as_slice()[12..18]);
+    let (r, x, mu) = unpack_se3(yref.as_slice());
     (g.rotation().as_matrix() - r)
         .amax()
         .max((g.translation() - x).amax() / x.amax())

@@ -7,67 +7,17 @@
 mod common;
 
 use common::*;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-struct Csv {
-    header: Vec<String>,
-    rows: Vec<Vec<f64>>,
-}
-
-impl Csv {
-    fn read(path: &Path) -> Csv {
-        let text = std::fs::read_to_string(path).unwrap();
-        let mut lines = text.lines();
-        let header = lines.next().unwrap().split(',').map(String::from).collect();
-        let rows = lines
-            .map(|l| {
-                l.split(',')
-                    .map(|x| x.parse::<f64>().unwrap_or(f64::NAN))
-                    .collect()
-            })
-            .collect();
-        Csv { header, rows }
-    }
-    fn col(&self, name: &str) -> Vec<f64> {
-        let j = self
-            .header
-            .iter()
-            .position(|h| h == name)
-            .unwrap_or_else(|| panic!("no column {name} in {:?}", self.header));
-        self.rows.iter().map(|r| r[j]).collect()
-    }
-    /// The column of the text table's `name` (for the trade's CSV, whose first columns are text).
-    fn text_col(path: &Path, name: &str) -> Vec<String> {
-        let text = std::fs::read_to_string(path).unwrap();
-        let mut lines = text.lines();
-        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-        let j = header.iter().position(|h| *h == name).unwrap();
-        lines
-            .map(|l| l.split(',').nth(j).unwrap_or("").to_string())
-            .collect()
-    }
-}
-
-/// Runs `lie-sim run FILE --duration T` from examples/scenes; returns the CSV and the summary.
-fn run_scene(file: &str, duration: &str) -> (Csv, String) {
-    let dir = temp_dir(file);
-    let out = dir.join("traj.csv");
-    let scene = scenes_dir().join(file);
-    let o = lie_sim(
-        &[
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--duration",
-            duration,
-        ],
-        &dir,
-    );
-    assert!(o.status.success(), "{file}: {}", stderr(&o));
-    let csv = Csv::read(&out);
-    std::fs::remove_dir_all(&dir).unwrap();
-    (csv, stdout(&o))
+/// The column of the trade table's `name` (its first columns are text).
+fn text_col(path: &Path, name: &str) -> Vec<String> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let j = header.iter().position(|h| *h == name).unwrap();
+    lines
+        .map(|l| l.split(',').nth(j).unwrap_or("").to_string())
+        .collect()
 }
 
 fn header(n_mu: usize, side: usize, casimir: bool) -> Vec<String> {
@@ -109,7 +59,7 @@ fn orthogonality(csv: &Csv, side: usize, r0: usize) -> f64 {
 /// column) is kept to round-off while the wheel spins up, and the platform turns (R leaves I).
 #[test]
 fn reaction_wheel_scene_keeps_the_casimir_while_the_wheel_spins_up() {
-    let (csv, summary) = run_scene("reaction-wheel-slew.toml", "25");
+    let (csv, summary) = run_example("reaction-wheel-slew.toml", "25");
     assert_eq!(csv.header, header(6, 7, true));
     assert!(summary.contains("wheel torques"), "{summary}");
     let c = csv.col("casimir");
@@ -136,7 +86,7 @@ fn reaction_wheel_scene_keeps_the_casimir_while_the_wheel_spins_up() {
 /// (x grows); R stays a rotation.
 #[test]
 fn underwater_vehicle_scene_porpoises_under_the_munk_moment() {
-    let (csv, summary) = run_scene("underwater-vehicle.toml", "10");
+    let (csv, summary) = run_example("underwater-vehicle.toml", "10");
     assert_eq!(csv.header, header(6, 4, false));
     assert!(summary.contains("quadratic drag"), "{summary}");
     let nose = csv.col("g31");
@@ -151,7 +101,7 @@ fn underwater_vehicle_scene_porpoises_under_the_munk_moment() {
 /// exceeds m g: 0.6 mm), then climbing; the roll doublet tilts it.
 #[test]
 fn quadrotor_scene_hovers_then_climbs() {
-    let (csv, summary) = run_scene("quadrotor.toml", "5");
+    let (csv, summary) = run_example("quadrotor.toml", "5");
     assert_eq!(csv.header, header(6, 4, false));
     assert!(
         summary.contains("thrust") && summary.contains("order 4"),
@@ -169,7 +119,7 @@ fn quadrotor_scene_hovers_then_climbs() {
 /// `pendulum-3d` is the heavy top: its energy is kept to O(h²) (h = 0.005) and R to round-off.
 #[test]
 fn pendulum_3d_scene_is_the_heavy_top() {
-    let (csv, summary) = run_scene("pendulum-3d.toml", "5");
+    let (csv, summary) = run_example("pendulum-3d.toml", "5");
     assert_eq!(csv.header, header(3, 3, false));
     assert!(summary.contains("heavy-top"), "{summary}");
     let e = csv.col("energy");
@@ -182,7 +132,7 @@ fn pendulum_3d_scene_is_the_heavy_top() {
 /// kept to O(h²) and each attitude block stays a rotation.
 #[test]
 fn coupled_bodies_scene_keeps_the_energy() {
-    let (csv, _) = run_scene("coupled-bodies.toml", "2");
+    let (csv, _) = run_example("coupled-bodies.toml", "2");
     assert_eq!(csv.header, header(18, 12, false));
     let e = csv.col("energy");
     let drift = e.iter().map(|x| (x / e[0] - 1.0).abs()).fold(0.0, f64::max);
@@ -222,9 +172,9 @@ fn trade_runs_on_every_vehicle_scene_with_its_momentum_map() {
             &dir,
         );
         assert!(o.status.success(), "{file}: {}", stderr(&o));
-        let methods = Csv::text_col(&out, "method");
-        let maps = Csv::text_col(&out, "max_momentum_map_error");
-        let failures = Csv::text_col(&out, "failure");
+        let methods = text_col(&out, "method");
+        let maps = text_col(&out, "max_momentum_map_error");
+        let failures = text_col(&out, "failure");
         assert!(
             methods.iter().any(|m| m == "lie-poisson"),
             "{file}: {methods:?}"
@@ -244,24 +194,11 @@ fn trade_runs_on_every_vehicle_scene_with_its_momentum_map() {
     }
 }
 
-/// Writes `scene` to a fresh directory, runs it, and checks: exit status 1, one line on stderr
-/// containing every one of `needles`, no file left but the scene.
-fn assert_rejected(name: &str, scene: &str, needles: &[&str]) {
-    let dir = temp_dir(name);
-    std::fs::write(dir.join("s.toml"), scene).unwrap();
-    let o = lie_sim(&["run", "s.toml", "--out", "out/t.csv"], &dir);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(1), "{name}: {err}");
-    assert_eq!(err.lines().count(), 1, "{name}: not one line: {err}");
-    for n in needles {
-        assert!(err.contains(n), "{name}: `{n}` missing from: {err}");
+/// [`assert_rejected`] for each (name, scene text, needles).
+fn assert_all_rejected(prefix: &str, cases: Vec<(&str, String, Vec<&str>)>) {
+    for (name, text, needles) in cases {
+        assert_rejected(&format!("{prefix}-{name}"), &text, &needles);
     }
-    let left: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .collect();
-    assert_eq!(left, vec![dir.join("s.toml")], "{name}: files left behind");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 fn scene(file: &str) -> String {
@@ -368,9 +305,7 @@ fn malformed_gyrostat_tables_are_errors_naming_the_field() {
             vec!["system.buoyancy", "not a parameter of gyrostat"],
         ),
     ];
-    for (name, text, needles) in cases {
-        assert_rejected(&format!("gyro-{name}"), &text, &needles);
-    }
+    assert_all_rejected("gyro", cases);
 }
 
 #[test]
@@ -434,9 +369,7 @@ fn malformed_underwater_vehicle_tables_are_errors_naming_the_field() {
             ],
         ),
     ];
-    for (name, text, needles) in cases {
-        assert_rejected(&format!("auv-{name}"), &text, &needles);
-    }
+    assert_all_rejected("auv", cases);
 }
 
 #[test]
@@ -513,7 +446,5 @@ fn malformed_quadrotor_and_coupled_tables_are_errors_naming_the_field() {
             vec!["forces", "quadrotor", "not coupled-bodies"],
         ),
     ];
-    for (name, text, needles) in cases {
-        assert_rejected(&format!("q-c-{name}"), &text, &needles);
-    }
+    assert_all_rejected("q-c", cases);
 }
