@@ -101,10 +101,9 @@ impl Quadrotor {
     pub fn torques(schedule: Schedule) -> Result<ControlInput<Se3>, IntegratorError> {
         ControlInput::new(Self::torque_map()?, schedule)
     }
-    /// `Γ = Rᵀe₃`.
+    /// `Γ = Rᵀe₃` (the heavy top's vertical in the body frame).
     fn up(g: &Se3) -> Vector3<f64> {
-        let m = g.rotation().as_matrix();
-        Vector3::new(m[(2, 0)], m[(2, 1)], m[(2, 2)])
+        super::HeavyTop::vertical_in_body(g.rotation())
     }
 }
 

@@ -214,10 +214,9 @@ impl UnderwaterVehicle {
     pub fn spatial_momentum(g: &Se3, mu: &Vector6<f64>) -> (Vector3<f64>, Vector3<f64>) {
         RigidBodySe3::spatial_momentum(g, mu)
     }
-    /// `Γ = Rᵀe₃`, the upward vertical in the body frame.
+    /// `Γ = Rᵀe₃`, the upward vertical in the body frame (the heavy top's).
     fn up(g: &Se3) -> Vector3<f64> {
-        let m = g.rotation().as_matrix();
-        Vector3::new(m[(2, 0)], m[(2, 1)], m[(2, 2)])
+        super::HeavyTop::vertical_in_body(g.rotation())
     }
 }
 
