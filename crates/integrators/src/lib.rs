@@ -26,6 +26,10 @@
 //!   independent of T), as a method ([`exact::ExactFreeBody`]) and as the kinetic piece of the
 //!   kicks ([`exact::FreeBodyFlow`], [`exact::FreeBodySe3Flow`]).
 //! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
+//! - [`GraggBulirschStoer`] ([`gragg_bulirsch_stoer`]): a reference method — Gragg–Bulirsch–Stoer
+//!   extrapolation of order 2k in exponential coordinates, explicit, keeping only g on G — that
+//!   shares no discretization with the methods above, so that it can measure them (`lie-sim
+//!   trade` refines it until two runs agree to a tolerance).
 //! - [`forces`]: external forces and controls `F_ext(t, g, ξ)` ([`forces::Forced`], scheduled body
 //!   torques, damping), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
 //!   Lagrange–d'Alembert way (`tests/forces.rs`: orders 2/1/4, exact momentum-map balance) and by
@@ -90,6 +94,7 @@ pub mod euler_poincare;
 pub mod events;
 pub mod exact;
 pub mod forces;
+pub mod gragg_bulirsch_stoer;
 mod integrator;
 pub mod lie_poisson;
 pub mod modified;
@@ -104,6 +109,7 @@ pub use compose::{Composition, CompositionScheme, StateSnapshot, SymmetricMethod
 pub use error::IntegratorError;
 pub use euler_arnold::{EulerArnold, EulerArnoldEulerPoincare, EulerArnoldLiePoisson};
 pub use euler_poincare::{EulerPoincare, TangentLiftIntegrator};
+pub use gragg_bulirsch_stoer::GraggBulirschStoer;
 pub use integrator::{integrate, Integrator, MethodInfo};
 pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};
