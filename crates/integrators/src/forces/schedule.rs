@@ -62,6 +62,12 @@ impl Schedule {
     pub fn knots(&self) -> usize {
         self.times.len()
     }
+    /// The knots' times, increasing: where u(t) may have kinks. A method of order p > 2 keeps its
+    /// order across a kink only if a step ends there (`lie-sim`'s reference ends its steps on
+    /// them).
+    pub fn times(&self) -> &[f64] {
+        &self.times
+    }
     /// `u(t)` into `out` (length [`Self::dim`]); no allocation.
     pub fn eval_into(&self, t: f64, out: &mut [f64]) {
         let n = self.times.len();
