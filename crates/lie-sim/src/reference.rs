@@ -625,10 +625,7 @@ mod tests {
     #[test]
     fn the_flag_default_is_the_default_tolerance() {
         assert_eq!("1e-13".parse::<f64>().unwrap(), DEFAULT_TOLERANCE);
-        assert_eq!(
-            budget_of(DEFAULT_BUDGET),
-            Options::default().budget
-        );
+        assert_eq!(budget_of(DEFAULT_BUDGET), Options::default().budget);
     }
 
     /// `DEFAULT_BUDGET` ("30s") as a duration.
