@@ -9,10 +9,10 @@
 //!
 //! - `error`: the error at T against the reference of [`crate::reference`] (the exact flow on
 //!   free-body scenes, elsewhere Gragg–Bulirsch–Stoer refined to `--reference-tolerance`, or the
-//!   user's `--reference`); a run meets the target when its error is resolved (at or above the
-//!   reference's estimated error, the floor) and its error plus the floor is within the target
-//!   ([`crate::reference::meets`]): a run is never chosen on an unresolved error, and a target
-//!   below twice the floor is refused, since no run could be shown to meet it; or
+//!   user's `--reference`); a run meets the target when its error bound is within it — its error
+//!   plus the reference's estimated error (the floor), or twice the floor for an error below the
+//!   floor, which the reference cannot resolve ([`crate::reference::meets`]) — and a target below
+//!   twice the floor is refused, since no run could be shown to meet it; or
 //! - `energy`: the maximum relative energy error over the run (no reference needed),
 //!
 //! and the cost the stepping time of the whole run. The choice is the cheapest run meeting the

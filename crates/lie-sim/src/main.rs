@@ -123,7 +123,7 @@ enum Command {
     /// reached); or your own with --reference. Its estimated error (the spread of its runs at its
     /// step and at twice it, plus 2ε(1 + ωT) for the rounding of the scene's data) is printed and
     /// is the floor: errors below it are shown as `unresolved`, not as numbers, in the table, the
-    /// CSV and the plot, and no run is picked on one.
+    /// CSV and the plot, and count as twice the floor when a run is picked for a target.
     #[command(mut_arg("step", |a| a.hide(true)))]
     Trade {
         /// The scene file (TOML); the embedded default scene when left out.
