@@ -37,7 +37,7 @@
 //! needed 5–6); the force's derivative is dropped (see [`crate::solver`]).
 
 use crate::compensated::two_sum;
-use crate::solver::{solve, Solution};
+use crate::solver::{solve, Scales, Solution};
 use crate::system::force;
 use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
@@ -315,7 +315,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         let solution = solve::<G, _>(
             &self.config,
             h,
-            || 0.0,
+            Scales::default,
             guess,
             &mut chord,
             prior,

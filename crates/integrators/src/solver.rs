@@ -122,6 +122,11 @@ pub fn ad_dual_operator<G: LieGroup>(mu: &G::Algebra) -> G::Operator {
 /// Updates of at most this many ε‖ξ‖ are rounding: they measure no contraction.
 const ROUNDING_UPDATES: f64 = 8.0;
 
+/// The relative size, against the state the solution is added to, below which updates that no
+/// longer contract are taken as the noise of the residual (√ε: far above rounding, far below any
+/// step's own size; see [`solve`]).
+const STALLED_NOISE: f64 = 1.4901161193847656e-8;
+
 /// Observed contraction above which [`SolverKind::SimplifiedNewton`] re-evaluates its Jacobian.
 const REFRESH_CONTRACTION: f64 = 0.1;
 
@@ -166,25 +171,30 @@ pub struct Solution<A, E> {
 /// `ρ = ‖Δξ_k‖/‖Δξ_{k−1}‖ < 1`, the error left after the update Δξ_k is at most about
 /// `ρ/(1−ρ) ‖Δξ_k‖`; the iteration stops when that estimate (or ‖Δξ_k‖ itself at the first
 /// iteration, or when the updates stop contracting at round-off level) is within
-/// `max(tolerance · ‖ξ‖_max, 8ε · scale)`, or when the update no longer changes ξ in floating
-/// point (Δξ = 0 or below half an ulp of ξ), where further iterations would repeat the last one.
+/// `max(tolerance · ‖ξ‖_max, 8ε · scales.data)`, or when the update no longer changes ξ in
+/// floating point (Δξ = 0 or below half an ulp of ξ), where further iterations would repeat the
+/// last one, or when the updates stop contracting (‖Δξ_k‖ ≥ ‖Δξ_{k−1}‖, measured) below
+/// √ε · `scales.state`.
 ///
-/// `scale` gives the size of the data the residual is computed from, where ‖ξ‖ may be far smaller
-/// (called at most once, and only by a step that does not stop on its tolerance at once):
-/// the tolerance stays relative to ‖ξ‖, but no iteration can resolve ξ better than the rounding
-/// of that data, 8ε·scale (8 ulps), which is therefore also a floor of the stopping test; updates
-/// below it measure no contraction, and the finite-difference steps are taken relative to
-/// `max(‖ξ‖_max, scale)`.
-/// An unknown of the size of its data passes 0 (Lie–Poisson's η = hξ); an increment that may
-/// vanish while its residual still rounds at the data's size passes that size (Euler–Poincaré's
-/// ξ̄ − ξ_k), without which an increment of 1e-20 against a residual rounded at 1e-18 could never
-/// be certified.
+/// `scales` gives, for an unknown that may be far smaller than its data (called at most once,
+/// and only by a step that does not stop on its tolerance at once), the size of the data the
+/// residual is formed from and of the state the solution is added to ([`Scales`]). The tolerance
+/// stays relative to ‖ξ‖, but no iteration can resolve ξ better than the rounding of the data,
+/// 8ε·data (8 ulps), which is therefore a floor of the stopping test (updates below it measure no
+/// contraction, and finite differences step relative to `max(‖ξ‖_max, data)`); and updates that
+/// no longer contract have reached the residual's own noise, which no iteration can reduce —
+/// rounding, or an approximate derivative inside the residual (Euler–Poincaré's field applies
+/// ∂²h/∂μ², a finite-difference Hessian unless the system gives its closed form, ~1e-10
+/// relative) — accepted below √ε of the state. An unknown of the size of its data and state passes zeros (Lie–Poisson's η = hξ); an
+/// increment that may vanish while its residual still rounds at the data's size passes them
+/// (Euler–Poincaré's ξ̄ − ξ_k), without which an increment of 1e-20 against a residual rounded at
+/// 1e-18 could never be certified.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)] // each an independent input: config, h (named by errors), the data's size, guess, warm matrix and prior, the two callbacks
 pub fn solve<G: LieGroup, E>(
     config: &SolverConfig,
     step: f64,
-    scale: impl FnOnce() -> f64,
+    scales: impl FnOnce() -> Scales,
     mut xi: G::Algebra,
     chord: &mut Option<G::Operator>,
     prior: Option<f64>,
@@ -192,7 +202,7 @@ pub fn solve<G: LieGroup, E>(
     mut jacobian: impl FnMut(&G::Algebra, &E) -> G::Operator,
 ) -> Result<Solution<G::Algebra, E>, IntegratorError> {
     let n = G::dim();
-    let mut scale = Lazy::new(scale);
+    let mut scales = Lazy::new(scales);
     let mut previous_update = f64::INFINITY;
     let mut contraction = 0.0f64;
     let mut bound = 0.0f64;
@@ -229,7 +239,10 @@ pub fn solve<G: LieGroup, E>(
                 }
             },
             SolverKind::NewtonFiniteDifference => {
-                let size = xi.norm_max().max(scale.get()).max(f64::MIN_POSITIVE.sqrt());
+                let size = xi
+                    .norm_max()
+                    .max(scales.get().data)
+                    .max(f64::MIN_POSITIVE.sqrt());
                 // Central differences: error O(δ²) + O(ε/δ); δ = ε^{1/3} ‖ξ‖ balances them.
                 let d = 6.055e-6 * size;
                 let j = operator_from_columns::<G>(n, |k| {
@@ -258,7 +271,7 @@ pub fn solve<G: LieGroup, E>(
             // An update at the rounding of ξ (a few ulps) measures the rounding, not the
             // contraction: it neither counts against the matrix nor claims ρ ≈ 0 for the next
             // step's prior, which gets the bound ρ ≤ max(‖Δξ_k‖, ε‖ξ‖)/‖Δξ_{k−1}‖ instead.
-            let rounding = f64::EPSILON * xi.norm_max().max(scale.get());
+            let rounding = f64::EPSILON * xi.norm_max().max(scales.get().data);
             if dn > ROUNDING_UPDATES * rounding {
                 contraction = contraction.max(dn / previous_update);
             }
@@ -273,12 +286,19 @@ pub fn solve<G: LieGroup, E>(
         } else {
             dn
         };
-        // Below the rounding of the data (ROUNDING_UPDATES ulps of `scale`) the residual cannot
-        // resolve ξ any better: there the iteration is as converged as floating point allows
-        // (it used to cycle or creep into NoConvergence where ξ is far smaller than its data).
+        // Below the rounding of the data (ROUNDING_UPDATES ulps of `scales.data`) the residual
+        // cannot resolve ξ any better: there the iteration is as converged as floating point
+        // allows (it used to cycle or creep into NoConvergence where ξ is far smaller than its
+        // data). Updates that no longer contract (measured: ‖Δξ_k‖ ≥ ‖Δξ_{k−1}‖) have reached the
+        // noise of the residual itself — rounding, or an approximate derivative inside it (a
+        // finite-difference Hessian, ~1e-10 relative) — and no further iteration can do better:
+        // accepted while that noise is below √ε of the state the solution is added to
+        // (`scales.state`).
+        let stalled = it > 1 && dn >= previous_update;
         if unchanged
             || error_estimate <= tolerance * xi.norm_max()
-            || error_estimate <= ROUNDING_UPDATES * f64::EPSILON * scale.get()
+            || error_estimate <= ROUNDING_UPDATES * f64::EPSILON * scales.get().data
+            || (stalled && dn <= STALLED_NOISE * scales.get().state)
         {
             return Ok(Solution {
                 xi,
@@ -302,23 +322,36 @@ pub fn solve<G: LieGroup, E>(
     })
 }
 
-/// A value computed at its first use only ([`solve`]'s `scale`: most steps stop on their
-/// tolerance before needing it).
-struct Lazy<F> {
-    f: Option<F>,
-    value: f64,
+/// What an unknown's residual is measured against where the unknown may be far smaller than the
+/// data it is computed from and the state it is added to (Euler–Poincaré's increment
+/// δ = ξ̄ − ξ_k); zero for an unknown of the size of both (Lie–Poisson's η = hξ). See [`solve`].
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Scales {
+    /// The size of the data the residual is formed from: its rounding, 8ε·data, is a floor of
+    /// the stopping test, and finite differences step relative to it.
+    pub data: f64,
+    /// The size of the state the solution is added to: updates that no longer contract are
+    /// accepted below √ε · state.
+    pub state: f64,
 }
 
-impl<F: FnOnce() -> f64> Lazy<F> {
+/// [`Scales`] computed at their first use only (most steps stop on their tolerance before
+/// needing them).
+struct Lazy<F> {
+    f: Option<F>,
+    value: Scales,
+}
+
+impl<F: FnOnce() -> Scales> Lazy<F> {
     #[inline(always)]
     fn new(f: F) -> Self {
         Self {
             f: Some(f),
-            value: 0.0,
+            value: Scales::default(),
         }
     }
     #[inline(always)]
-    fn get(&mut self) -> f64 {
+    fn get(&mut self) -> Scales {
         if let Some(f) = self.f.take() {
             self.value = f();
         }
@@ -361,7 +394,7 @@ mod tests {
         let solution = solve::<So3, Vector3<f64>>(
             &config,
             0.1,
-            || 0.0,
+            Scales::default,
             xi0,
             &mut None,
             None,
@@ -402,7 +435,7 @@ mod tests {
             let solution = solve::<So3, ()>(
                 &config,
                 0.1,
-                || 0.0,
+                Scales::default,
                 target + Vector3::repeat(delta),
                 &mut None,
                 None,
@@ -440,7 +473,10 @@ mod tests {
             solve::<So3, ()>(
                 &config,
                 0.1,
-                || scale,
+                || Scales {
+                    data: scale,
+                    state: 0.0,
+                },
                 start,
                 &mut None,
                 None,
@@ -474,7 +510,7 @@ mod tests {
         let solution = solve::<So3, ()>(
             &config,
             0.1,
-            || 0.0,
+            Scales::default,
             Vector3::zeros(),
             &mut None,
             None,
