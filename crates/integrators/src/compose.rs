@@ -460,6 +460,11 @@ impl<I> Composition<I> {
     pub fn inner(&self) -> &I {
         &self.inner
     }
+    /// The base method, mutably (for [`crate::processing::ComposedKernel`]'s processor, whose
+    /// stages are steps of the base method).
+    pub(crate) fn inner_mut(&mut self) -> &mut I {
+        &mut self.inner
+    }
     /// Unwraps the base method.
     pub fn into_inner(self) -> I {
         self.inner

@@ -25,6 +25,11 @@
 //! - [`exact`]: the exact free rigid body flow (Jacobi elliptic functions, any step, cost
 //!   independent of T), as a method ([`exact::ExactFreeBody`]) and as the kinetic piece of the
 //!   kicks ([`exact::FreeBodyFlow`], [`exact::FreeBodySe3Flow`]).
+//! - [`modified`]: the Lie–Poisson step on a modified Hamiltonian H − h²H₂ [− h⁴H₄] of the free
+//!   rigid body: order 4 or 6 at the cost of one order-2 step (θ = ½ and θ = 0).
+//! - [`processing`]: processed methods `P ∘ Kⁿ ∘ P⁻¹` of any symmetric method — effective order
+//!   6 and 8 from fewer basic steps than a composition of that order, P applied only when the
+//!   state is read ([`processing::Processed`]).
 //! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
 //! - [`forces`]: external forces and controls `F_ext(t, g, ξ)` ([`forces::Forced`], scheduled body
 //!   torques, damping), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
@@ -93,6 +98,7 @@ pub mod forces;
 mod integrator;
 pub mod lie_poisson;
 pub mod modified;
+pub mod processing;
 pub mod solver;
 pub mod splitting;
 mod system;
