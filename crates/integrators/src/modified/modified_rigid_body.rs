@@ -129,6 +129,65 @@ fn polynomial<const N: usize>(
     (f, g, hs)
 }
 
+/// The quadratic part `Q(y) = Σ qₖ yᵏ` ([`QUADRATIC`] order) as the symmetric matrix A with
+/// `Q(y) = yᵀAy`: `∇Q = 2Ay`, `∇²Q = 2A`.
+fn quadratic_form(q: &[f64; 6]) -> Matrix3<f64> {
+    Matrix3::new(
+        q[0],
+        0.5 * q[3],
+        0.5 * q[4],
+        0.5 * q[3],
+        q[1],
+        0.5 * q[5],
+        0.5 * q[4],
+        0.5 * q[5],
+        q[2],
+    )
+}
+
+/// The cubic `T(y) = Σ cₖ yᵏ` ([`CUBIC`] order: y₁³, y₂³, y₃³, y₁²y₂, y₁²y₃, y₁y₂², y₂²y₃,
+/// y₁y₃², y₂y₃², y₁y₂y₃), unrolled: its value, gradient and Hessian in y (the hot path of the
+/// order-6 step; the generic [`polynomial`] evaluates the tables for [`ModifiedRigidBody::h4`]).
+#[inline]
+fn cubic(c: &[f64; 10], y: &Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>) {
+    let (a, b, d) = (y[0], y[1], y[2]);
+    let value = c[0] * a * a * a
+        + c[1] * b * b * b
+        + c[2] * d * d * d
+        + c[3] * a * a * b
+        + c[4] * a * a * d
+        + c[5] * a * b * b
+        + c[6] * b * b * d
+        + c[7] * a * d * d
+        + c[8] * b * d * d
+        + c[9] * a * b * d;
+    let grad = Vector3::new(
+        3.0 * c[0] * a * a
+            + 2.0 * (c[3] * a * b + c[4] * a * d)
+            + c[5] * b * b
+            + c[7] * d * d
+            + c[9] * b * d,
+        3.0 * c[1] * b * b
+            + c[3] * a * a
+            + 2.0 * (c[5] * a * b + c[6] * b * d)
+            + c[8] * d * d
+            + c[9] * a * d,
+        3.0 * c[2] * d * d
+            + c[4] * a * a
+            + c[6] * b * b
+            + 2.0 * (c[7] * a * d + c[8] * b * d)
+            + c[9] * a * b,
+    );
+    let h11 = 6.0 * c[0] * a + 2.0 * (c[3] * b + c[4] * d);
+    let h22 = 6.0 * c[1] * b + 2.0 * (c[5] * a + c[6] * d);
+    let h33 = 6.0 * c[2] * d + 2.0 * (c[7] * a + c[8] * b);
+    let h12 = 2.0 * (c[3] * a + c[5] * b) + c[9] * d;
+    let h13 = 2.0 * (c[4] * a + c[7] * d) + c[9] * b;
+    let h23 = 2.0 * (c[6] * b + c[8] * d) + c[9] * a;
+    let hess = Matrix3::new(h11, h12, h13, h12, h22, h23, h13, h23, h33);
+    (value, grad, hess)
+}
+
 /// The free rigid body with the Hamiltonian modified for the step h of the Lie–Poisson scheme
 /// with τ = `T` and the θ and order of a [`ModifiedScheme`]:
 ///
@@ -153,10 +212,10 @@ pub struct ModifiedRigidBody<T: ModifiedTau> {
     /// The principal axes (columns): Π's principal coordinates are axesᵀΠ.
     axes: Matrix3<f64>,
     diagonal: bool,
-    /// h² times H₂'s coefficients of [`QUADRATIC`].
-    q2: [f64; 6],
-    /// h⁴ times H₄'s coefficients of [`CUBIC`] (zero for order 4).
-    q4: [f64; 10],
+    /// h²H₂ as the quadratic form A of `quadratic_form`: h²H₂ = yᵀAy.
+    a2: Matrix3<f64>,
+    /// h⁴ times H₄'s coefficients of [`CUBIC`] (order 6 only).
+    q4: Option<[f64; 10]>,
     h: f64,
     _tau: core::marker::PhantomData<T>,
 }
@@ -177,18 +236,19 @@ impl<T: ModifiedTau> ModifiedRigidBody<T> {
         let (axes, inv) = (*axes, moments.map(|m| 1.0 / m));
         let (t2, t4) = coefficients::tables(T::CAYLEY, scheme.theta() == 0.5);
         let h2 = h * h;
-        let mut q2 = collapse(t2, &QUADRATIC, &inv);
-        q2.iter_mut().for_each(|c| *c *= h2);
-        let mut q4 = collapse(t4, &CUBIC, &inv);
-        let k4 = if scheme.order() == 6 { h2 * h2 } else { 0.0 };
-        q4.iter_mut().for_each(|c| *c *= k4);
+        let a2 = quadratic_form(&collapse(t2, &QUADRATIC, &inv)) * h2;
+        let q4 = (scheme.order() == 6).then(|| {
+            let mut q4 = collapse(t4, &CUBIC, &inv);
+            q4.iter_mut().for_each(|c| *c *= h2 * h2);
+            q4
+        });
         Ok(Self {
             diagonal: body.is_diagonal(),
             body,
             scheme,
             u,
             axes,
-            q2,
+            a2,
             q4,
             h,
             _tau: core::marker::PhantomData,
@@ -233,18 +293,39 @@ impl<T: ModifiedTau> ModifiedRigidBody<T> {
     fn squares(&self, pi: &Vector3<f64>) -> Vector3<f64> {
         self.principal(pi).map(|x| x * x)
     }
-    /// The modification M(p) = h²H₂ + h⁴H₄ at the principal coordinates p, its gradient and
-    /// Hessian in p: ∂M/∂pᵢ = 2pᵢ ∂M/∂yᵢ, ∂²M/∂pᵢ∂pⱼ = 2δᵢⱼ ∂M/∂yᵢ + 4pᵢpⱼ ∂²M/∂yᵢ∂yⱼ.
+    /// The modification M(y) = h²H₂ + h⁴H₄ at yᵢ = pᵢ² (p the principal coordinates), its
+    /// gradient and Hessian in y.
+    #[inline]
+    fn modification_y(&self, y: &Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>) {
+        let ay = self.a2 * y;
+        let (mut f, mut g, mut hs) = (y.dot(&ay), ay * 2.0, self.a2 * 2.0);
+        if let Some(c) = &self.q4 {
+            let (f4, g4, h4) = cubic(c, y);
+            f += f4;
+            g += g4;
+            hs += h4;
+        }
+        (f, g, hs)
+    }
+    /// M at the principal coordinates p and its gradient and Hessian in p:
+    /// ∂M/∂pᵢ = 2pᵢ ∂M/∂yᵢ, ∂²M/∂pᵢ∂pⱼ = 2δᵢⱼ ∂M/∂yᵢ + 4pᵢpⱼ ∂²M/∂yᵢ∂yⱼ.
     #[inline]
     fn modification(&self, p: &Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>) {
-        let y = p.map(|x| x * x);
-        let (f2, g2, h2) = polynomial(&self.q2, &QUADRATIC, &y);
-        let (f4, g4, h4) = polynomial(&self.q4, &CUBIC, &y);
-        let (gy, hy) = (g2 + g4, h2 + h4);
+        let (f, gy, hy) = self.modification_y(&p.map(|x| x * x));
         let grad = p.component_mul(&gy) * 2.0;
         let hess =
             Matrix3::from_diagonal(&(gy * 2.0)) + (p * p.transpose()).component_mul(&hy) * 4.0;
-        (f2 + f4, grad, hess)
+        (f, grad, hess)
+    }
+    /// ∂M/∂p alone (the velocity's hot path: no Hessian).
+    #[inline]
+    fn modification_gradient(&self, p: &Vector3<f64>) -> Vector3<f64> {
+        let y = p.map(|x| x * x);
+        let mut gy = self.a2 * y * 2.0;
+        if let Some(c) = &self.q4 {
+            gy += cubic(c, &y).1;
+        }
+        p.component_mul(&gy) * 2.0
     }
     /// A principal-frame vector in body coordinates.
     #[inline]
@@ -265,7 +346,7 @@ impl<T: ModifiedTau> System<So3> for ModifiedRigidBody<T> {
     /// `∂H̃/∂Π = 𝕀⁻¹Π − A ∇_p M`, A the principal axes.
     #[inline]
     fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
-        let (_, g, _) = self.modification(&self.principal(mu));
+        let g = self.modification_gradient(&self.principal(mu));
         self.u * mu - self.body_vector(g)
     }
     /// `𝕀⁻¹ − A ∇²_p M Aᵀ`.
