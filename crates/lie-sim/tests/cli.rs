@@ -1110,6 +1110,50 @@ fn sweep_writes_one_row_per_member() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The sweep of a processed (and of a modified) method: on one thread and on two byte for byte,
+/// every member completed — the ensemble reads each member's processed state like any observer.
+#[test]
+fn sweeps_of_processed_and_modified_methods_run_and_are_thread_independent() {
+    let dir = temp_dir("sweep-new");
+    let base = std::fs::read_to_string(scenes_dir().join("sweep.toml")).unwrap();
+    for (name, key) in [
+        ("processed", "processing = \"blanes-casas-murua-6-11\""),
+        ("modified", "modified = true\norder = 6"),
+    ] {
+        std::fs::write(
+            dir.join(format!("{name}.toml")),
+            base.replace("[integrator]", &format!("[integrator]\n{key}")),
+        )
+        .unwrap();
+        for threads in ["1", "2"] {
+            let o = lie_sim(
+                &[
+                    "sweep",
+                    &format!("{name}.toml"),
+                    "--out",
+                    &format!("{name}-{threads}.csv"),
+                    "--count",
+                    "12",
+                    "--duration",
+                    "0.5",
+                    "--threads",
+                    threads,
+                ],
+                &dir,
+            );
+            assert!(o.status.success(), "{name}: {}", stderr(&o));
+        }
+        let one = std::fs::read_to_string(dir.join(format!("{name}-1.csv"))).unwrap();
+        assert_eq!(
+            one,
+            std::fs::read_to_string(dir.join(format!("{name}-2.csv"))).unwrap(),
+            "{name}"
+        );
+        assert_eq!(one.matches("completed").count(), 12, "{name}: {one}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// Shards 0/3, 1/3, 2/3 merged (in any order) are the unsharded sweep byte for byte, and the
 /// sweep on one thread is the sweep on two byte for byte.
 #[test]
