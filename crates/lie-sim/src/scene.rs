@@ -73,7 +73,9 @@
 //! base steps a step; `blanes-casas-murua-6-11`: 11; `blanes-casas-murua-6-13`: 13): the
 //! processed method `P ∘ Kⁿ ∘ P⁻¹` of effective order 6, whose kernel K is a composition of the
 //! symmetric base method and whose processor P (10–12 base steps) runs only when the state is
-//! written (each output row, the summary, the end), never per step. It needs a symmetric base as
+//! read, never as part of a step. `lie-sim run` reads the state after every step (its energy
+//! monitor and events), so there a processed method pays P every step; `trade` reads every 8
+//! steps and at T, `sweep` every `monitor_every` steps. It needs a symmetric base as
 //! `composition` does, or `splitting` / `kinetic-kick`, and does not go with `composition` or
 //! `modified`.
 //!

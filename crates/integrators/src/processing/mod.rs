@@ -25,18 +25,19 @@
 //! image of `ad_X` — commutators with X of what lies one grade below:
 //! - **grade 3**: the only element is E₃ and grade 2 is empty, so nothing: effective order 4
 //!   needs Σγ³ = 0, the classical order-4 condition. Processing cannot make order 4 cheaper for a
-//!   black-box symmetric method; it could only remove the [X,[X,E₃]] part of an order-4
+//!   black-box symmetric method; it could only remove the `[X,[X,E₃]]` part of an order-4
 //!   composition's h⁵ error, and for the triple jump that part is 0.14 against 5.29 on E₅
 //!   (`tools/processing_conditions.txt`). No effective-order-4 scheme is shipped here; order 4 at
 //!   order-2 cost comes from the modified Hamiltonian ([`crate::modified`]).
-//! - **grade 5**: E₅ stays (Σγ⁵ = 0 needed); [X,[X,E₃]] = ad_X [X,E₃] is removed by a processor
-//!   with `Z = h⁴ c₅ [X,E₃] + …`. Effective order 6 needs Σγ = 1, Σγ³ = Σγ⁵ = 0 — three conditions instead of
-//!   the four of order 6 — and the freedom goes into a much smaller error.
-//! - **grade 7**: E₇ and [E₃,[X,E₃]] stay, the two X-commutator words go: effective order 8
-//!   needs six conditions instead of eight.
+//! - **grade 5**: E₅ stays (Σγ⁵ = 0 needed); `[X,[X,E₃]] = ad_X [X,E₃]` is removed by a
+//!   processor with `Z = h⁴ c₅ [X,E₃] + …`. Effective order 6 needs Σγ = 1, Σγ³ = Σγ⁵ = 0 —
+//!   three conditions instead of the four of order 6 — and the freedom goes into a much smaller
+//!   error.
+//! - **grade 7**: E₇ and `[E₃,[X,E₃]]` stay, the two X-commutators `[X,[X,E₅]]` and
+//!   `ad_X⁴ E₃` go: effective order 8 needs five conditions instead of eight.
 //!
 //! For a **two-part splitting** `e^{a₁hA} e^{b₁hB} …` processing removes more (grade 3 is spanned
-//! by [A,[A,B]] and [B,[A,B]], and [[A,B], A+B] is removable), but the palindromic kernels with
+//! by `[A,[A,B]]` and `[B,[A,B]]`, and `[[A,B], A+B]` is removable), but the palindromic kernels with
 //! two B flows never reach it: their h³ error `α[A,[A,B]] + β[B,[A,B]]` has α = β only for
 //! `a² − a/2 + 1/12 = 0`, which has no real root (the script prints the derivation). So the
 //! kinetic–kick splittings are processed here as black-box symmetric methods like the others.
