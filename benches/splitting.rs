@@ -49,7 +49,11 @@ fn g0() -> So3 {
     So3::exp(&Vector3::new(0.3, -0.5, 0.8))
 }
 
-fn hand_rk4(moments: [f64; 3], mgchi: Vector3<f64>, pi0: Vector3<f64>) -> HandRk4 {
+fn hand_rk4<const GRAVITY: bool>(
+    moments: [f64; 3],
+    mgchi: Vector3<f64>,
+    pi0: Vector3<f64>,
+) -> HandRk4<GRAVITY> {
     let r = nalgebra::Rotation3::from_matrix_unchecked(*g0().as_matrix());
     HandRk4 {
         inv_i: Vector3::from(moments).map(|i| 1.0 / i),
@@ -63,7 +67,7 @@ fn free_body(c: &mut Criterion) {
     let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let mut group = c.benchmark_group("trade/free_body");
-    let mut hand = hand_rk4([1.0, 2.0, 3.0], Vector3::zeros(), pi0);
+    let mut hand = hand_rk4::<false>([1.0, 2.0, 3.0], Vector3::zeros(), pi0);
     group.bench_function("rk4-hand-written+g", |b| b.iter(|| hand.step(black_box(H))));
     for (suffix, g) in [("+g", Some(g0())), ("-g", None)] {
         let rk4 = QuaternionRk4::new(body.clone(), pi0, g).unwrap();
@@ -126,7 +130,7 @@ fn heavy_top(c: &mut Criterion) {
     let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 1.0, mgchi).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let mut group = c.benchmark_group("trade/heavy_top");
-    let mut hand = hand_rk4([1.0, 2.0, 3.0], mgchi, pi0);
+    let mut hand = hand_rk4::<true>([1.0, 2.0, 3.0], mgchi, pi0);
     group.bench_function("rk4-hand-written+g", |b| b.iter(|| hand.step(black_box(H))));
     let rk4 = QuaternionRk4::new(top.clone(), pi0, Some(g0())).unwrap();
     bench_step(&mut group, "rk4-quaternion+g", rk4);

@@ -7,11 +7,15 @@ use nalgebra::{Quaternion, Vector3};
 /// `1/inv_i` and a constant body-frame gravity arm `mgchi` (zero for the free body), written as
 /// anyone would with nalgebra: `q̇ = ½ q ⊗ (0, Ω)`, `Π̇ = Π × Ω + mgχ × Rᵀe₃`, q renormalised
 /// once per step.
+///
+/// `GRAVITY` is a compile-time switch, as a hand-written free-body step simply has no gravity
+/// code: a run-time `mgχ ≠ 0` test in each stage costs the free-body step ~40 % (it was
+/// measured at 1.45× the branch-free step) and would flatter every ratio against it.
 #[derive(Clone)]
-pub struct HandRk4 {
+pub struct HandRk4<const GRAVITY: bool> {
     /// 1/Iᵢ.
     pub inv_i: Vector3<f64>,
-    /// The body-frame gravity arm mgχ (zero for the free body).
+    /// The body-frame gravity arm mgχ (read only with `GRAVITY`).
     pub mgchi: Vector3<f64>,
     /// The attitude quaternion.
     pub q: Quaternion<f64>,
@@ -19,13 +23,13 @@ pub struct HandRk4 {
     pub pi: Vector3<f64>,
 }
 
-impl HandRk4 {
+impl<const GRAVITY: bool> HandRk4<GRAVITY> {
     #[inline]
     fn rate(&self, q: &Quaternion<f64>, pi: &Vector3<f64>) -> (Quaternion<f64>, Vector3<f64>) {
         let omega = pi.component_mul(&self.inv_i);
         let dq = (q * Quaternion::from_imag(omega)) * 0.5;
         let mut dpi = pi.cross(&omega);
-        if self.mgchi != Vector3::zeros() {
+        if GRAVITY {
             // Rᵀe₃ for R = R(q/|q|): the third row of the rotation matrix.
             let (w, x, y, z) = (q.w, q.i, q.j, q.k);
             let s = 1.0 / q.norm_squared();
@@ -38,8 +42,8 @@ impl HandRk4 {
         }
         (dq, dpi)
     }
-    #[inline]
     /// One classical RK4 step of size h, q renormalised.
+    #[inline]
     pub fn step(&mut self, h: f64) {
         let (q, pi) = (self.q, self.pi);
         let (l1, k1) = self.rate(&q, &pi);

@@ -105,6 +105,18 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
         mu_k: &G::Algebra,
         nu: Option<&G::Algebra>,
     ) -> MomentumUpdate<G::Algebra>;
+    /// `μ_{k+1} − μ_k` of [`Self::momentum_update`] alone, what a step adds to μ_k at its
+    /// solution; maps override it where the increment is cheaper without the other parts (the
+    /// left map without an impulse: `Tau::tau_split_coadjoint_increment`, one increment for exp
+    /// and for Cayley on SO(3)).
+    fn momentum_increment(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        self.momentum_update(eta, mu_k, nu).increment
+    }
     /// The μ-component of `(R̃_d^{T*})⁻¹((g_k, μ_k), (g_{k+1}, μ_{k+1}))`: the base momentum μ̄.
     fn base_momentum(
         &self,
@@ -112,6 +124,20 @@ pub trait LiftedMap<G: LieGroup>: Clone + Debug + Send + Sync {
         mu_k: &G::Algebra,
         mu_next: &G::Algebra,
     ) -> G::Algebra;
+    /// The base momentum μ̄ of a trial η straight from μ_k and the impulse ν:
+    /// `base_momentum(η, μ_k, momentum_update(η, μ_k, ν).next)` up to round-off, the quantity
+    /// every residual of a cotangent-lift step needs. The provided form is exactly that
+    /// composition; maps override it where μ̄ is cheaper to form without μ_{k+1} (the left map
+    /// by `d^{L*}τ_ζ Ad*_{τ(ζ)} = d^{L*}τ_{−ζ}`), so that a step forms μ_{k+1} once, at the
+    /// solution.
+    fn base_momentum_from_impulse(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        self.base_momentum(eta, mu_k, &self.momentum_update(eta, mu_k, nu).next)
+    }
     /// `∂μ̄/∂η` along [`Self::momentum_update`] with ν held fixed.
     fn base_momentum_derivative(
         &self,
@@ -175,10 +201,11 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
         T::compose_tau_split(gk, self.theta(), eta)
     }
-    /// `τ⁻¹(τ(η)) = η` to `1e-8 (1 + ‖η‖)`; skipped inside `Tau::INVERTIBLE_RADIUS`.
+    /// `τ⁻¹(τ(η)) = η` to `1e-8 (1 + ‖η‖)`; skipped inside `Tau::INVERTIBLE_RADIUS` (compared
+    /// squared: no square root on the step's path).
     #[inline]
     fn check_domain(&self, eta: &G::Algebra) -> Result<(), DiscretizationError> {
-        if eta.norm() <= T::INVERTIBLE_RADIUS {
+        if eta.dot(eta) <= T::INVERTIBLE_RADIUS * T::INVERTIBLE_RADIUS {
             Ok(())
         } else {
             tau_round_trip::<G, T>(eta)
@@ -190,7 +217,7 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     /// ζ), `Δ = δ_{θη}(μ_k) + ν` and `μ_{k+1} − μ_k = Δ + δ_{(1−θ)η}(μ_k) + δ_{(1−θ)η}(Δ)`: μ_k
     /// enters once, so |μ|² follows a random walk of roundings instead of drifting with the
     /// rounding of τ's entries `1 − O(|η|²)` at small steps. τ itself is not formed.
-    #[inline]
+    #[inline(always)]
     fn momentum_update(
         &self,
         eta: &G::Algebra,
@@ -199,6 +226,15 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     ) -> MomentumUpdate<G::Algebra> {
         let th = self.theta();
         let xa = eta.scale(th);
+        if th == 0.0 && nu.is_none() {
+            // Δ = 0: μ_{k+1} − μ_k = δ_η(μ_k) alone.
+            let increment = T::tau_coadjoint_increment(eta, mu_k);
+            return MomentumUpdate {
+                transported: mu_k.clone(),
+                next: mu_k.add(&increment),
+                increment,
+            };
+        }
         let carried = if th == 0.0 {
             G::Algebra::zeros(G::dim())
         } else {
@@ -225,6 +261,21 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
         }
     }
 
+    /// Without an impulse, `μ_{k+1} = Ad*_{τ(θη)τ((1−θ)η)} μ_k`: one
+    /// `Tau::tau_split_coadjoint_increment` (the two factors in one where τ allows it).
+    #[inline(always)]
+    fn momentum_increment(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        match nu {
+            None => T::tau_split_coadjoint_increment(self.theta(), eta, mu_k),
+            Some(_) => self.momentum_update(eta, mu_k, nu).increment,
+        }
+    }
+
     /// `μ̄ = θ d^{L*}τ_{−θη} μ_k + (1−θ) d^{L*}τ_{(1−θ)η} μ_{k+1}`.
     #[inline]
     fn base_momentum(
@@ -240,6 +291,54 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
             bar = bar.axpy(th, &T::dtau_left_dual_apply(&eta.scale(-th), mu_k));
         }
         bar
+    }
+
+    /// `μ̄ = θ d^{L*}τ_{−θη} μ_k + (1−θ) d^{L*}τ_{−(1−θ)η} (Ad*_{τ(θη)} μ_k + ν)`: the second term
+    /// of [`LiftedMap::base_momentum`] with `μ_{k+1} = Ad*_{τ((1−θ)η)}(Ad*_{τ(θη)} μ_k + ν)` and
+    /// `d^{L*}τ_ζ Ad*_{τ(ζ)} = (Ad_{τ(ζ)} d^Lτ_ζ)ᵀ = (d^Rτ_ζ)ᵀ = d^{L*}τ_{−ζ}` (τ(ζ)⁻¹ = τ(−ζ)).
+    /// For θ = ½ both terms share `d^{L*}τ_{−η/2}`: `Tau::midpoint_base_momentum` (one coadjoint
+    /// increment and one dual tangent, or a closed form), one dual tangent for θ ∈ {0, 1},
+    /// against two of each through μ_{k+1}.
+    #[inline]
+    fn base_momentum_from_impulse(
+        &self,
+        eta: &G::Algebra,
+        mu_k: &G::Algebra,
+        nu: Option<&G::Algebra>,
+    ) -> G::Algebra {
+        let th = self.theta();
+        let b = 1.0 - th;
+        if b == 0.0 {
+            // θ = 1: μ̄ = d^{L*}τ_{−η} μ_k (the impulse enters only μ_{k+1}).
+            return T::dtau_left_dual_apply(&eta.neg(), mu_k);
+        }
+        if th == b {
+            // θ = ½: ½ d^{L*}τ_{−η/2}(μ_k + Ad*_{τ(η/2)} μ_k) fused (Tau::midpoint_base_momentum),
+            // plus ½ d^{L*}τ_{−η/2} ν.
+            let a = eta.scale(0.5);
+            let bar = T::midpoint_base_momentum(&a, mu_k);
+            return match nu {
+                None => bar,
+                Some(nu) => bar.axpy(0.5, &T::dtau_left_dual_apply(&a.neg(), nu)),
+            };
+        }
+        // x = Ad*_{τ(θη)} μ_k + ν
+        let xa = eta.scale(th);
+        let mut x = if th == 0.0 {
+            mu_k.clone()
+        } else {
+            mu_k.add(&T::tau_coadjoint_increment(&xa, mu_k))
+        };
+        if let Some(nu) = nu {
+            x = x.add(nu);
+        }
+        if th == 0.0 {
+            T::dtau_left_dual_apply(&eta.neg(), &x)
+        } else {
+            T::dtau_left_dual_apply(&eta.scale(-b), &x)
+                .scale(b)
+                .axpy(th, &T::dtau_left_dual_apply(&xa.neg(), mu_k))
+        }
     }
 
     /// With `M(μ) := (δ ↦ ad*_δ μ)` and `D(ζ; μ) := ∂/∂ζ (d^{L*}τ_ζ μ)`

@@ -40,6 +40,22 @@ fn check_cotangent_pieces<G: LieGroup, T: Tau<G>>(
     let up = m.momentum_update(eta, mu, Some(nu));
     let bar = m.base_momentum(eta, mu, &up.next);
     let s = 1.0 + eta.norm() + mu.norm() + nu.norm();
+    // μ̄ without μ_{k+1} (d^{L*}τ_ζ Ad*_{τ(ζ)} = d^{L*}τ_{−ζ}), with and without an impulse
+    assert_small(
+        "base_momentum_from_impulse = base_momentum through μ_{k+1}",
+        m.base_momentum_from_impulse(eta, mu, Some(nu))
+            .sub(&bar)
+            .norm_max(),
+        1e-13 * s,
+    );
+    let free = m.base_momentum(eta, mu, &m.momentum_update(eta, mu, None).next);
+    assert_small(
+        "base_momentum_from_impulse without ν",
+        m.base_momentum_from_impulse(eta, mu, None)
+            .sub(&free)
+            .norm_max(),
+        1e-13 * s,
+    );
     // the transported momentum, from the matrix of τ
     let plain = T::tau(&eta.scale(theta)).coadjoint_apply(mu);
     assert_small(
@@ -51,6 +67,23 @@ fn check_cotangent_pieces<G: LieGroup, T: Tau<G>>(
         "μ_k + increment = μ_{k+1}",
         mu.add(&up.increment).sub(&up.next).norm_max(),
         1e-15 * s,
+    );
+    // the step's increment alone, with and without ν, against the matrices of τ
+    let ta = T::tau(&eta.scale(theta));
+    let tb = T::tau(&eta.scale(1.0 - theta));
+    let with_nu = tb.coadjoint_apply(&ta.coadjoint_apply(mu).add(nu)).sub(mu);
+    assert_small(
+        "momentum_increment with ν",
+        m.momentum_increment(eta, mu, Some(nu))
+            .sub(&with_nu)
+            .norm_max(),
+        1e-13 * s,
+    );
+    let without = tb.coadjoint_apply(&ta.coadjoint_apply(mu)).sub(mu);
+    assert_small(
+        "momentum_increment without ν (Tau::tau_split_coadjoint_increment)",
+        m.momentum_increment(eta, mu, None).sub(&without).norm_max(),
+        1e-13 * s,
     );
     let k = CotangentBundle::from_parts(gk.clone(), mu.clone());
     let k1 = CotangentBundle::from_parts(g1, up.next.clone());
@@ -191,8 +224,9 @@ lifted_map_suite!(se2_cayley, Se2, Cayley, false);
 lifted_map_suite!(so4_exp, SoN<4>, ExpMap, false);
 lifted_map_suite!(so4_cayley, SoN<4>, Cayley, false);
 
-/// SO(3)'s one-product `g cay(θη) cay((1−θ)η) = g cay(η/(1 − θ(1−θ)|η|²/4))` on both sides of
-/// the switch to two products (denominator ½): total angles up to and beyond a half turn, every θ.
+/// SO(3)'s one-product `g cay(θη) cay((1−θ)η) = g cay(η/(1 − θ(1−θ)|η|²/4))`, and the one
+/// coadjoint increment of the same element, on both sides of the switch to two factors
+/// (denominator ½): total angles up to and beyond a half turn, every θ.
 #[test]
 fn so3_cayley_split_compose_is_the_product_of_the_two_factors() {
     use lie_groups::{CayleyGroup, So3};
@@ -210,6 +244,16 @@ fn so3_cayley_split_compose_is_the_product_of_the_two_factors() {
                 &format!("θ = {theta}, |η| = {size}"),
                 one.matrix_distance(&two),
                 2e-15 * (1.0 + size),
+            );
+            // the coadjoint counterpart, on the same switch
+            let mu = Vector3::new(0.7, -0.2, 1.3);
+            let plain = So3::cay(&(w * (1.0 - theta)))
+                .coadjoint_apply(&So3::cay(&(w * theta)).coadjoint_apply(&mu))
+                - mu;
+            assert_small(
+                &format!("increment: θ = {theta}, |η| = {size}"),
+                (So3::cay_split_coadjoint_increment(theta, &w, &mu) - plain).amax(),
+                4e-15 * (1.0 + size),
             );
         }
     }

@@ -218,11 +218,13 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let theta = self.theta();
-        let (xi, iterations, jacobians, chord, contraction) = if theta == 0.0 {
-            (self.xi.clone(), 0, 0, None, 0.0)
+        let (xi, iterations, jacobians, contraction) = if theta == 0.0 {
+            (self.xi.clone(), 0, 0, Some((0.0, 0.0)))
         } else {
-            let chord = self.warm.take_chord(h);
-            let evaluate = |xi: &G::Algebra| Ok((self.residual(h, xi), ()));
+            // Taken out for the solve (updated in place), put back for WarmStart::record.
+            let prior = self.warm.prior_contraction(h);
+            let mut chord = core::mem::take(self.warm.chord(h));
+            let evaluate = |xi: &G::Algebra| (self.residual(h, xi), ());
             // Predictor ξ⁰ = ξ_k + θh f(g_k, ξ_k): r(ξ) = ξ − ξ_k − θh f + O(h²) at ξ = ξ_k + O(h),
             // so ξ⁰ is within O(h²) of the solution (ξ_k alone is O(h)).
             // After four steps of this size: the WarmStart extrapolation, O(h⁴) relative.
@@ -230,15 +232,21 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                 self.xi
                     .axpy(theta * h, &self.field(self.t, self.g.as_ref(), &self.xi))
             });
-            let solution = solve::<G, ()>(&self.config, h, guess, chord, evaluate, |xi, _| {
-                self.jacobian(h, xi)
-            })?;
+            let solution = solve::<G, ()>(
+                &self.config,
+                h,
+                guess,
+                &mut chord,
+                prior,
+                evaluate,
+                |xi, _| self.jacobian(h, xi),
+            )?;
+            *self.warm.chord(h) = chord;
             (
                 solution.xi,
                 solution.iterations,
                 solution.jacobians,
-                solution.chord,
-                solution.contraction,
+                solution.contraction.zip(solution.contraction_bound),
             )
         };
         let eta = xi.scale(h);
@@ -283,7 +291,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         } else {
             self.unnormalized + 1
         };
-        self.warm.record(h, &xi, chord, contraction);
+        self.warm.record(h, &xi, contraction, jacobians);
         Ok(())
     }
     fn time(&self) -> f64 {

@@ -40,7 +40,7 @@ use crate::solver::{solve, Solution};
 use crate::system::force;
 use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
-use discretization::{DiscretizationError, DiscretizationMap, LiftedMap, MomentumUpdate};
+use discretization::{DiscretizationError, DiscretizationMap, LiftedMap};
 use lie_groups::{LieGroup, Operator, Vector};
 
 /// The Lie–Poisson integrator (eq. 19) on G for the left-trivialized discretization map
@@ -228,23 +228,21 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// For a trial ξ (= η, the step's algebra vector): the impulse `ν = h F(ḡ)` at the base
     /// point `ḡ` of `R̃_d(ḡ, ξ)` (formed only for a system with a potential), plus
     /// `h F_ext(t_k + θh, ḡ, ξ/h)` for a forced system (discrete Lagrange–d'Alembert, see
-    /// [`crate::forces`]), and the map's [`LiftedMap::momentum_update`].
+    /// [`crate::forces`]); `None` when there is neither.
     #[inline]
-    fn update(&self, h: f64, xi: &G::Algebra) -> MomentumUpdate<G::Algebra> {
+    fn impulse(&self, h: f64, xi: &G::Algebra) -> Option<G::Algebra> {
         if self.system.is_forced() {
-            return self.forced_update(h, xi);
+            return Some(self.forced_impulse(h, xi));
         }
-        let impulse = self
-            .g
+        self.g
             .as_ref()
             .filter(|_| self.system.has_potential())
             .and_then(|gk| force(&self.system, Some(&self.map.base_point(gk, xi))))
-            .map(|f| f.scale(h));
-        self.map.momentum_update(xi, &self.mu, impulse.as_ref())
+            .map(|f| f.scale(h))
     }
 
-    /// [`Self::update`] of a forced system.
-    fn forced_update(&self, h: f64, xi: &G::Algebra) -> MomentumUpdate<G::Algebra> {
+    /// [`Self::impulse`] of a forced system.
+    fn forced_impulse(&self, h: f64, xi: &G::Algebra) -> G::Algebra {
         let gbar = self
             .g
             .as_ref()
@@ -260,16 +258,19 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         if let Some(fp) = force(&self.system, gbar.as_ref()) {
             f = f.add(&fp);
         }
-        self.map.momentum_update(xi, &self.mu, Some(&f.scale(h)))
+        f.scale(h)
     }
 
-    /// For a trial ξ: the [`Self::update`] and the base momentum μ̄
-    /// ([`LiftedMap::base_momentum`]).
+    /// For a trial ξ: the impulse ([`Self::impulse`]) and the base momentum μ̄ straight from
+    /// μ_k ([`LiftedMap::base_momentum_from_impulse`]): μ_{k+1} is formed once per step, at the
+    /// solution ([`LiftedMap::momentum_update`]).
     #[inline]
     fn evaluate(&self, h: f64, xi: &G::Algebra) -> Evaluation<G> {
-        let up = self.update(h, xi);
-        let bar = self.map.base_momentum(xi, &self.mu, &up.next);
-        Evaluation { bar, up }
+        let impulse = self.impulse(h, xi);
+        let bar = self
+            .map
+            .base_momentum_from_impulse(xi, &self.mu, impulse.as_ref());
+        Evaluation { bar, impulse }
     }
 
     /// The predictor `ξ⁰ = h ∂h/∂μ(μ_k + ½ h ad*_{v_k} μ_k + (1−θ) h F(g_k))`, v_k = ∂h/∂μ(μ_k).
@@ -298,15 +299,29 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// Solves `r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) = 0` from the [`WarmStart`] extrapolation of the last
     /// solutions and their Newton matrix when the last steps had size h, else from the
     /// [`Self::predictor`].
+    #[inline(always)]
     fn solve_velocity(&mut self, h: f64) -> Result<StepSolution<G>, IntegratorError> {
         let guess = self.warm.predict(h).unwrap_or_else(|| self.predictor(h));
-        let chord = self.warm.take_chord(h);
+        // The warm matrix is taken out for the solve (which updates it in place) and put back
+        // for WarmStart::record; a failed step drops it.
+        let prior = self.warm.prior_contraction(h);
+        let mut chord = core::mem::take(self.warm.chord(h));
         let evaluate = |xi: &G::Algebra| {
             let ev = self.evaluate(h, xi);
-            Ok((xi.sub(&self.system.velocity(&ev.bar).scale(h)), ev))
+            (xi.sub(&self.system.velocity(&ev.bar).scale(h)), ev)
         };
         let jacobian = |xi: &G::Algebra, ev: &Evaluation<G>| self.jacobian(h, xi, ev);
-        solve::<G, _>(&self.config, h, guess, chord, evaluate, jacobian)
+        let solution = solve::<G, _>(
+            &self.config,
+            h,
+            guess,
+            &mut chord,
+            prior,
+            evaluate,
+            jacobian,
+        )?;
+        *self.warm.chord(h) = chord;
+        Ok(solution)
     }
 
     /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ:
@@ -314,7 +329,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// potential where D τ is exact: exp on every group, Cayley on SO(3), SE(3), SE(2); exact up
     /// to O(h²) otherwise), plus the potential's term [`Self::force_term`].
     fn jacobian(&self, h: f64, xi: &G::Algebra, ev: &Evaluation<G>) -> G::Operator {
-        let mut dbar = self.map.base_momentum_derivative(xi, &self.mu, &ev.up);
+        let up = self.map.momentum_update(xi, &self.mu, ev.impulse.as_ref());
+        let mut dbar = self.map.base_momentum_derivative(xi, &self.mu, &up);
         if let Some(force) = self.force_term(h, xi) {
             dbar = dbar.add(&force);
         }
@@ -335,13 +351,13 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
 }
 
 /// The solver's result for one step: ξ, the last [`Evaluation`] and the Newton matrix.
-type StepSolution<G> = Solution<<G as LieGroup>::Algebra, Evaluation<G>, <G as LieGroup>::Operator>;
+type StepSolution<G> = Solution<<G as LieGroup>::Algebra, Evaluation<G>>;
 
 /// The quantities of one evaluation of the step map at a trial ξ, shared by the residual and
 /// the Newton Jacobian at the same ξ.
 struct Evaluation<G: LieGroup> {
     bar: G::Algebra,
-    up: MomentumUpdate<G::Algebra>,
+    impulse: Option<G::Algebra>,
 }
 
 impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftIntegrator<G, M, S> {
@@ -356,12 +372,13 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         if self.config.check_domain {
             self.map.check_domain(&xi).map_err(step_too_large(h))?;
         }
-        // The new state at the solution: from the solver's last evaluation when that was at
-        // exactly this ξ, else evaluated again (bitwise the same either way).
-        let dmu = match solution.evaluation {
-            Some(ev) => ev.up.increment,
-            None => self.update(h, &xi).increment,
+        // The new momentum at the solution, with the impulse of the solver's last evaluation
+        // when that was at exactly this ξ, else evaluated again (bitwise the same either way).
+        let impulse = match solution.evaluation {
+            Some(ev) => ev.impulse,
+            None => self.impulse(h, &xi),
         };
+        let dmu = self.map.momentum_increment(&xi, &self.mu, impulse.as_ref());
         // μ_{k+1} = μ_k + (Δμ + carried error), by TwoSum (Knuth): the new rounding error is kept
         // exactly for the next step (compensated summation, Vilmart 2008).
         let (a, b) = (&self.mu, dmu.add(&self.mu_err));
@@ -399,8 +416,12 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         } else {
             self.unnormalized + 1
         };
-        self.warm
-            .record(h, &xi, solution.chord, solution.contraction);
+        self.warm.record(
+            h,
+            &xi,
+            solution.contraction.zip(solution.contraction_bound),
+            solution.jacobians,
+        );
         Ok(())
     }
     fn time(&self) -> f64 {

@@ -112,11 +112,14 @@ pub fn ad_dual_operator<G: LieGroup>(mu: &G::Algebra) -> G::Operator {
     G::ad_dual_operator(mu)
 }
 
+/// Updates of at most this many ε‖ξ‖ are rounding: they measure no contraction.
+const ROUNDING_UPDATES: f64 = 8.0;
+
 /// Observed contraction above which [`SolverKind::SimplifiedNewton`] re-evaluates its Jacobian.
 const REFRESH_CONTRACTION: f64 = 0.1;
 
 /// The converged ξ of [`solve`].
-pub struct Solution<A, E, G = ()> {
+pub struct Solution<A, E> {
     /// The solution ξ.
     pub xi: A,
     /// The number of iterations (residual evaluations, not counting finite differences).
@@ -125,24 +128,32 @@ pub struct Solution<A, E, G = ()> {
     /// ξ — the usual case at convergence, where the last update no longer changes ξ in floating
     /// point — so the caller need not evaluate again.
     pub evaluation: Option<E>,
-    /// [`SolverKind::SimplifiedNewton`]'s inverse matrix J⁻¹ at the end, for the next step of
-    /// the same size ([`crate::WarmStart`]); `None` for the other kinds.
-    pub chord: Option<G>,
     /// How many Jacobians were evaluated (0 when a warm [`SolverKind::SimplifiedNewton`] matrix
     /// served the whole iteration).
     pub jacobians: usize,
-    /// The largest contraction ‖Δξ_k‖/‖Δξ_{k−1}‖ observed (0 after one iteration).
-    pub contraction: f64,
+    /// The largest contraction ‖Δξ_k‖/‖Δξ_{k−1}‖ observed; `None` when the iteration stopped
+    /// after its first update, before it could measure one.
+    pub contraction: Option<f64>,
+    /// An upper bound of the contraction that rounding cannot fake: the largest
+    /// `max(‖Δξ_k‖, ε‖ξ‖)/‖Δξ_{k−1}‖` (an update at the rounding of ξ, even a zero one, only
+    /// bounds ρ by ε‖ξ‖/‖Δξ_{k−1}‖); what a next step may take as its prior.
+    pub contraction_bound: Option<f64>,
 }
 
 /// Solves `r(ξ) = 0` from the guess `xi`; [`SolverKind::SimplifiedNewton`] starts from the
-/// inverse matrix `chord` when given (a previous step's, see [`crate::WarmStart`]) and evaluates
-/// J only if there is none or the iteration contracts by less than 0.1.
+/// inverse matrix in `chord` when there is one (a previous step's, see [`crate::WarmStart`]),
+/// evaluates J only if there is none or the iteration contracts by less than 0.1, and leaves its
+/// final J⁻¹ in `chord` (in place: the matrix is not moved per iteration); the other kinds
+/// leave `chord` empty. `prior` is an estimate of the contraction of the matrix in `chord` (from
+/// the previous steps that used it, [`crate::WarmStart::prior_contraction`]): with it the first
+/// update Δξ₁ leaves an error estimated by `prior/(1 − prior) ‖Δξ₁‖`, so a guess already close
+/// enough is accepted after one residual evaluation, and no later update of the same matrix is
+/// estimated to contract better than the prior.
 ///
 /// `evaluate(ξ)` returns the residual r(ξ) together with whatever by-products of its evaluation
 /// the Jacobian and the caller can reuse; `jacobian(ξ, by-products)` is called by the Newton kinds
-/// right after `evaluate` at the same ξ. `evaluate` returns an error for non-finite values or
-/// points outside τ's domain; those errors are passed on.
+/// right after `evaluate` at the same ξ. A non-finite residual (NaN from outside τ's domain,
+/// an overflow) is [`IntegratorError::NonFinite`].
 ///
 /// Stopping rule (Hairer & Wanner, *Solving ODEs II*, §IV.8): with the contraction estimate
 /// `ρ = ‖Δξ_k‖/‖Δξ_{k−1}‖ < 1`, the error left after the update Δξ_k is at most about
@@ -150,109 +161,113 @@ pub struct Solution<A, E, G = ()> {
 /// iteration, or when the updates stop contracting at round-off level) is within
 /// `tolerance · ‖ξ‖_max`, or when the update no longer changes ξ in floating point (Δξ = 0 or
 /// below half an ulp of ξ), where further iterations would repeat the last one.
+#[inline(always)]
 pub fn solve<G: LieGroup, E>(
     config: &SolverConfig,
     step: f64,
     mut xi: G::Algebra,
-    mut chord: Option<G::Operator>,
-    mut evaluate: impl FnMut(&G::Algebra) -> Result<(G::Algebra, E), IntegratorError>,
+    chord: &mut Option<G::Operator>,
+    prior: Option<f64>,
+    mut evaluate: impl FnMut(&G::Algebra) -> (G::Algebra, E),
     mut jacobian: impl FnMut(&G::Algebra, &E) -> G::Operator,
-) -> Result<Solution<G::Algebra, E, G::Operator>, IntegratorError> {
+) -> Result<Solution<G::Algebra, E>, IntegratorError> {
     let n = G::dim();
-    let mut last_residual = f64::INFINITY;
     let mut previous_update = f64::INFINITY;
     let mut contraction = 0.0f64;
+    let mut bound = 0.0f64;
     let mut jacobians = 0;
     // Simplified Newton's J⁻¹, kept across iterations (and steps).
     if config.kind != SolverKind::SimplifiedNewton {
-        chord = None;
+        *chord = None;
     }
+    // The prior belongs to the matrix it came with: while that matrix serves, no update is
+    // estimated to contract better (a ratio of two updates measures the contraction only along
+    // the current error, and underestimates it before the iteration is asymptotic); without one,
+    // the first update is its own estimate (rate 1).
+    let floor = prior.filter(|_| chord.is_some());
+    let mut rate = floor.unwrap_or(1.0);
     for it in 1..=config.max_iterations {
-        let (r, by_products) = evaluate(&xi)?;
-        if !r.is_finite() {
-            return Err(IntegratorError::NonFinite {
-                what: "step residual",
-            });
-        }
-        last_residual = r.norm_max();
+        let (r, by_products) = evaluate(&xi);
         let delta = match config.kind {
             SolverKind::FixedPoint => r,
             SolverKind::Newton => {
                 jacobians += 1;
                 invert::<G>(step, &jacobian(&xi, &by_products))?.apply(&r)
             }
-            SolverKind::SimplifiedNewton => {
-                let inv = match chord.take() {
-                    Some(inv) => inv,
-                    None => {
-                        jacobians += 1;
-                        invert::<G>(step, &jacobian(&xi, &by_products))?
-                    }
-                };
-                let delta = inv.apply(&r);
-                chord = Some(inv);
-                delta
-            }
+            SolverKind::SimplifiedNewton => match chord {
+                Some(inv) => inv.apply(&r),
+                None => {
+                    jacobians += 1;
+                    chord
+                        .insert(invert::<G>(step, &jacobian(&xi, &by_products))?)
+                        .apply(&r)
+                }
+            },
             SolverKind::NewtonFiniteDifference => {
                 let scale = xi.norm_max().max(f64::MIN_POSITIVE.sqrt());
                 // Central differences: error O(δ²) + O(ε/δ); δ = ε^{1/3} ‖ξ‖ balances them.
                 let d = 6.055e-6 * scale;
-                let mut err = None;
                 let j = operator_from_columns::<G>(n, |k| {
                     let e = G::Algebra::basis(n, k);
-                    let plus = evaluate(&xi.axpy(d, &e));
-                    let minus = evaluate(&xi.axpy(-d, &e));
-                    match (plus, minus) {
-                        (Ok((p, _)), Ok((m, _))) => p.sub(&m).scale(0.5 / d),
-                        (Err(e), _) | (_, Err(e)) => {
-                            err = Some(e);
-                            G::Algebra::zeros(n)
-                        }
-                    }
+                    let (plus, _) = evaluate(&xi.axpy(d, &e));
+                    let (minus, _) = evaluate(&xi.axpy(-d, &e));
+                    plus.sub(&minus).scale(0.5 / d)
                 });
-                if let Some(e) = err {
-                    return Err(e);
-                }
+                // A non-finite J (a trial point where r is not finite) makes ξ non-finite below.
                 invert::<G>(step, &j)?.apply(&r)
             }
         };
         let next = xi.sub(&delta);
-        let unchanged = same_bits(&next, &xi);
-        xi = next;
-        if !xi.is_finite() {
+        // A non-finite residual, Jacobian or update makes the iterate non-finite.
+        if !next.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "solver iterate ξ",
             });
         }
         let dn = delta.norm_max();
-        let rho = dn / previous_update;
-        contraction = contraction.max(rho);
-        // No contraction estimate at the first iteration (previous_update = ∞, ρ = 0).
-        let error_estimate = if it > 1 && rho < 1.0 {
-            dn * rho / (1.0 - rho)
+        if it > 1 {
+            rate = dn / previous_update;
+            if jacobians == 0 {
+                rate = rate.max(floor.unwrap_or(0.0));
+            }
+            // An update at the rounding of ξ (a few ulps) measures the rounding, not the
+            // contraction: it neither counts against the matrix nor claims ρ ≈ 0 for the next
+            // step's prior, which gets the bound ρ ≤ max(‖Δξ_k‖, ε‖ξ‖)/‖Δξ_{k−1}‖ instead.
+            let rounding = f64::EPSILON * xi.norm_max();
+            if dn > ROUNDING_UPDATES * rounding {
+                contraction = contraction.max(dn / previous_update);
+            }
+            bound = bound.max(dn.max(rounding) / previous_update);
+        }
+        // `unchanged`: ξ is a fixed point of the iteration in floating point, so every further
+        // iteration would repeat this one.
+        let unchanged = same_bits(&next, &xi);
+        xi = next;
+        let error_estimate = if rate < 1.0 {
+            dn * rate / (1.0 - rate)
         } else {
             dn
         };
-        // `unchanged`: ξ is a fixed point of the iteration in floating point, so every further
-        // iteration would repeat this one.
         if unchanged || error_estimate <= config.tolerance * xi.norm_max() {
             return Ok(Solution {
                 xi,
                 iterations: it,
                 evaluation: unchanged.then_some(by_products),
-                chord,
                 jacobians,
-                contraction,
+                contraction: (it > 1).then_some(contraction),
+                contraction_bound: (it > 1).then_some(bound),
             });
         }
-        if rho > REFRESH_CONTRACTION {
-            chord = None;
+        if it > 1 && rate > REFRESH_CONTRACTION {
+            *chord = None;
         }
         previous_update = dn;
     }
+    // The residual at the last iterate, evaluated once more here rather than at every iteration.
+    let (r, _) = evaluate(&xi);
     Err(IntegratorError::NoConvergence {
         iterations: config.max_iterations,
-        residual: last_residual,
+        residual: r.norm_max(),
     })
 }
 
@@ -287,11 +302,12 @@ mod tests {
             ..SolverConfig::default()
         };
         let xi0 = Vector3::new(1.0, 1.0, 1.0);
-        let evaluate = |xi: &Vector3<f64>| Ok((Vector3::new(1e-30, 0.0, 0.0), *xi));
-        let solution = solve::<So3, Vector3<f64>>(&config, 0.1, xi0, None, evaluate, |_, _| {
-            Matrix3::identity()
-        })
-        .unwrap();
+        let evaluate = |xi: &Vector3<f64>| (Vector3::new(1e-30, 0.0, 0.0), *xi);
+        let solution =
+            solve::<So3, Vector3<f64>>(&config, 0.1, xi0, &mut None, None, evaluate, |_, _| {
+                Matrix3::identity()
+            })
+            .unwrap();
         assert_eq!(solution.xi, xi0);
         assert_eq!(solution.iterations, 1);
         assert_eq!(solution.evaluation, Some(xi0));
@@ -311,10 +327,16 @@ mod tests {
             ..SolverConfig::default()
         };
         let target = Vector3::new(1.0, -2.0, 0.5);
-        let evaluate = |xi: &Vector3<f64>| Ok(((xi - target) * 0.1, ()));
-        let solution = solve::<So3, ()>(&config, 0.1, Vector3::zeros(), None, evaluate, |_, _| {
-            Matrix3::identity()
-        })
+        let evaluate = |xi: &Vector3<f64>| ((xi - target) * 0.1, ());
+        let solution = solve::<So3, ()>(
+            &config,
+            0.1,
+            Vector3::zeros(),
+            &mut None,
+            None,
+            evaluate,
+            |_, _| Matrix3::identity(),
+        )
         .unwrap();
         let error = (solution.xi - target).amax();
         assert!(

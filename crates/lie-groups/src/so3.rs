@@ -127,6 +127,30 @@ fn coadjoint_increment(w: &Vector3<f64>, mu: &Vector3<f64>, a: f64, b: f64) -> V
     w.cross(&wm) * b - wm * a
 }
 
+/// `(A, B)` with `cay(ω/den) − I = A ω̂ + B ω̂²`, den = 1 − θ(1−θ)|ω|²/4 (the one element
+/// cay(θω)cay((1−θ)ω)), while den ≥ ½; `None` beyond. With ω' = ω/den the Cayley coefficients
+/// `a = 4/(4 + |ω'|²)`, b = a/2 scale to `A = a/den = 4 den q`, `B = b/den² = 2q`,
+/// `q = 1/(4 den² + |ω|²)`: one division and no division of ω (at θ ∈ {0, 1}, den = 1 and these are
+/// cay's own 4/(4 + |ω|²), 2/(4 + |ω|²)).
+#[inline(always)]
+fn cay_split_coeffs(theta: f64, w: &Vector3<f64>) -> Option<(f64, f64)> {
+    let t2 = w.norm_squared();
+    let den = 1.0 - theta * (1.0 - theta) * t2 * 0.25;
+    if den >= 0.5 {
+        let q = 1.0 / (4.0 * den * den + t2);
+        Some((4.0 * den * q, 2.0 * q))
+    } else {
+        None
+    }
+}
+
+/// The 3×3 product, unrolled and always inlined (nalgebra's generic product was left out of line
+/// on the integrators' step, ~70 instructions with the call).
+#[inline(always)]
+fn mul3(a: &Matrix3<f64>, b: &Matrix3<f64>) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| a[(i, 0)] * b[(0, j)] + a[(i, 1)] * b[(1, j)] + a[(i, 2)] * b[(2, j)])
+}
+
 /// `a ω̂ + b ω̂²` (the rotation `I + a ω̂ + b ω̂²` less the identity), entry by entry as in
 /// [`rodrigues_matrix`].
 #[inline]
@@ -298,6 +322,24 @@ impl So3 {
     #[inline]
     pub fn as_matrix(&self) -> &Matrix3<f64> {
         &self.r
+    }
+
+    /// `R ← R exp(α êᵢ)` in place, from `(sin α, cos α)`: the rotation about the body axis eᵢ
+    /// turns columns j = i+1 and k = i+2 (mod 3) of R, `(rⱼ, rₖ) ← (c rⱼ + s rₖ, c rₖ − s rⱼ)` —
+    /// 12 flops, R rounded once; the splittings' principal-axis flows. Panics if i > 2.
+    #[inline]
+    pub fn rotate_about_body_axis(&mut self, i: usize, sin: f64, cos: f64) {
+        let (j, k) = match i {
+            0 => (1, 2),
+            1 => (2, 0),
+            2 => (0, 1),
+            _ => panic!("So3::rotate_about_body_axis: axis {i} of 0, 1, 2"),
+        };
+        for row in 0..3 {
+            let (rj, rk) = (self.r[(row, j)], self.r[(row, k)]);
+            self.r[(row, j)] = cos * rj + sin * rk;
+            self.r[(row, k)] = cos * rk - sin * rj;
+        }
     }
 
     /// Checked constructor with an explicit tolerance: refuses non-finite entries
@@ -656,7 +698,7 @@ impl LieGroup for So3 {
     fn exp_compose(g: &Self, w: &Vector3<f64>) -> Self {
         let (a, b) = exp_coeffs(w.norm_squared());
         Self {
-            r: g.r + g.r * rodrigues_increment(w, a, b),
+            r: g.r + mul3(&g.r, &rodrigues_increment(w, a, b)),
         }
     }
     /// `[ξ, η] = ξ × η`.
@@ -715,8 +757,10 @@ impl LieGroup for So3 {
         d
     }
     #[inline]
+    #[allow(clippy::eq_op)] // x − x is the point: 0 for finite x, NaN for NaN and ±∞
     fn is_finite(&self) -> bool {
-        self.r.iter().all(|x| x.is_finite())
+        // Branch-free: x − x is 0 for finite x, NaN otherwise.
+        self.r.iter().fold(0.0, |s, x| s + (x - x)) == 0.0
     }
     #[inline]
     fn matrix_distance(&self, other: &Self) -> f64 {
@@ -752,21 +796,45 @@ impl CayleyGroup for So3 {
     fn cay_compose(g: &Self, w: &Vector3<f64>) -> Self {
         let a = 4.0 / (4.0 + w.norm_squared());
         Self {
-            r: g.r + g.r * rodrigues_increment(w, a, 0.5 * a),
+            r: g.r + mul3(&g.r, &rodrigues_increment(w, a, 0.5 * a)),
         }
     }
     /// `R cay(θω) cay((1−θ)ω) = R cay(ω / (1 − θ(1−θ)|ω|²/4))`: cay(ω) is the rotation with Gibbs
     /// vector ω/2, and Gibbs vectors compose as `(a + b + a × b)/(1 − a·b)` (the cross term
     /// vanishing for parallel ones). Used while the denominator is at least ½ (a total angle up to
-    /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products.
+    /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products. The
+    /// coefficients of `cay(ω/den) − I = A ω̂ + B ω̂²` come from [`cay_split_coeffs`] (one
+    /// division, shared with [`CayleyGroup::cay_split_coadjoint_increment`] of the same step).
     #[inline]
     fn cay_split_compose(g: &Self, theta: f64, w: &Vector3<f64>) -> Self {
-        let den = 1.0 - theta * (1.0 - theta) * w.norm_squared() * 0.25;
-        if den >= 0.5 {
-            Self::cay_compose(g, &(w / den))
-        } else {
-            Self::cay_compose(&Self::cay_compose(g, &(w * theta)), &(w * (1.0 - theta)))
+        match cay_split_coeffs(theta, w) {
+            Some((a, b)) => Self {
+                r: g.r + mul3(&g.r, &rodrigues_increment(w, a, b)),
+            },
+            None => Self::cay_compose(&Self::cay_compose(g, &(w * theta)), &(w * (1.0 - theta))),
         }
+    }
+    /// `(Ad*_{cay((1−θ)ω)} Ad*_{cay(θω)} − I) μ = (Ad*_{cay(ω/den)} − I) μ`,
+    /// den = 1 − θ(1−θ)|ω|²/4, as [`CayleyGroup::cay_split_compose`] (and on the same switch, with
+    /// the same coefficients).
+    #[inline]
+    fn cay_split_coadjoint_increment(
+        theta: f64,
+        w: &Vector3<f64>,
+        mu: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        match cay_split_coeffs(theta, w) {
+            Some((a, b)) => coadjoint_increment(w, mu, a, b),
+            None => crate::tau::split_increment_of_factors::<Self, crate::Cayley>(theta, w, mu),
+        }
+    }
+    /// `½ d^{L*}cay_{−a}(μ + Ad*_{cay a} μ) = c (μ + δ_a μ)`, c = 4/(4 + |a|²), δ_a = Ad*_{cay a} − I:
+    /// with `d^{L*}cay_{−a} = c (I − â/2)` and `μ + cay(a)ᵀμ = 2 (I + â/2)⁻¹ μ`, the product is
+    /// `c (I − â/2)(I + â/2)⁻¹ μ = c cay(a)ᵀ μ`. One division (the composition takes two).
+    #[inline]
+    fn cay_midpoint_base_momentum(a: &Vector3<f64>, mu: &Vector3<f64>) -> Vector3<f64> {
+        let c = 4.0 / (4.0 + a.norm_squared());
+        (mu + coadjoint_increment(a, mu, c, 0.5 * c)) * c
     }
     /// `cay⁻¹(R) = 2 vee(R − Rᵀ)/(1 + tr R)` (the closed form of `2 (R − I)(R + I)⁻¹`); an error
     /// where `1 + tr R ≤ 1e-14`, i.e. at rotations by π, where R + I is singular.

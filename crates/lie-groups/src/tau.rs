@@ -64,6 +64,21 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
             &xi.scale(1.0 - theta),
         )
     }
+    /// The increment `(Ad*_{τ((1−θ)ξ)} Ad*_{τ(θξ)} − I) μ = (Ad*_{τ(θξ) τ((1−θ)ξ)} − I) μ`, the
+    /// coadjoint counterpart of [`Tau::compose_tau_split`]: one increment where the two factors
+    /// are one element τ(cξ) (exp: c = 1; Cayley on SO(3): the Gibbs composition), otherwise
+    /// `δ_a μ + δ_b μ + δ_b(δ_a μ)` with `δ_ζ = Ad*_{τ(ζ)} − I`, a = θξ, b = (1−θ)ξ.
+    fn tau_split_coadjoint_increment(theta: f64, xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        split_increment_of_factors::<G, Self>(theta, xi, mu)
+    }
+    /// `½ d^{L*}τ_{−a} (μ + Ad*_{τ(a)} μ)`, the base momentum of the midpoint (θ = ½) map with
+    /// a = η/2 and no impulse (see `discretization`'s `LiftedMap::base_momentum_from_impulse`).
+    /// The provided form is that composition (one coadjoint increment, one dual tangent);
+    /// Cayley on SO(3) has the closed form `Ad*_{cay(a)} μ / (1 + |a|²/4)` (one division).
+    fn midpoint_base_momentum(a: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        let x = mu.add(mu).add(&Self::tau_coadjoint_increment(a, mu));
+        Self::dtau_left_dual_apply(&a.neg(), &x).scale(0.5)
+    }
     /// `d^{L*} τ_ξ μ = (d^L τ_ξ)ᵀ μ`.
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         Self::dtau_left(xi).apply_transpose(mu)
@@ -82,6 +97,25 @@ pub trait Tau<G: LieGroup>: Copy + Debug + Default + Send + Sync + 'static {
     fn dtau_left_dual_derivative(_xi: &G::Algebra, mu: &G::Algebra) -> G::Operator {
         crate::group::half_ad_dual_operator::<G>(mu)
     }
+}
+
+/// `δ_a μ + δ_b μ + δ_b(δ_a μ)` (a = θξ, b = (1−θ)ξ, `δ_ζ = Ad*_{τ(ζ)} − I`): the provided
+/// [`Tau::tau_split_coadjoint_increment`], factor by factor (one factor skipped at θ ∈ {0, 1}).
+pub(crate) fn split_increment_of_factors<G: LieGroup, T: Tau<G>>(
+    theta: f64,
+    xi: &G::Algebra,
+    mu: &G::Algebra,
+) -> G::Algebra {
+    if theta == 0.0 {
+        return T::tau_coadjoint_increment(xi, mu);
+    }
+    if theta == 1.0 {
+        return T::tau_coadjoint_increment(xi, mu);
+    }
+    let a = T::tau_coadjoint_increment(&xi.scale(theta), mu);
+    let eb = xi.scale(1.0 - theta);
+    a.add(&T::tau_coadjoint_increment(&eb, mu))
+        .add(&T::tau_coadjoint_increment(&eb, &a))
 }
 
 /// τ = exp, the group exponential, on every Lie group.
@@ -120,6 +154,11 @@ impl<G: LieGroup> Tau<G> for ExpMap {
     #[inline]
     fn compose_tau_split(g: &G, _theta: f64, xi: &G::Algebra) -> G {
         G::exp_compose(g, xi)
+    }
+    /// `exp(θξ) exp((1−θ)ξ) = exp ξ`: one increment.
+    #[inline]
+    fn tau_split_coadjoint_increment(_theta: f64, xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::exp_coadjoint_increment(xi, mu)
     }
     #[inline]
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
@@ -187,6 +226,22 @@ pub trait CayleyGroup: LieGroup {
             &xi.scale(1.0 - theta),
         )
     }
+    /// `(Ad*_{cay((1−θ)ξ)} Ad*_{cay(θξ)} − I) μ` ([`Tau::tau_split_coadjoint_increment`]);
+    /// groups with a composition formula for parallel arguments override it as
+    /// [`CayleyGroup::cay_split_compose`] (SO(3)).
+    fn cay_split_coadjoint_increment(
+        theta: f64,
+        xi: &Self::Algebra,
+        mu: &Self::Algebra,
+    ) -> Self::Algebra {
+        split_increment_of_factors::<Self, Cayley>(theta, xi, mu)
+    }
+    /// `½ d^{L*}cay_{−a} (μ + Ad*_{cay(a)} μ)` ([`Tau::midpoint_base_momentum`]); the provided
+    /// form composes the two maps, SO(3) has a closed form.
+    fn cay_midpoint_base_momentum(a: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
+        let x = mu.add(mu).add(&Self::cay_coadjoint_increment(a, mu));
+        Self::dcay_left_dual_apply(&a.neg(), &x).scale(0.5)
+    }
     /// `d^{L*}cay_ξ μ = (d^L cay_ξ)ᵀ μ`. The provided form builds d^L cay_ξ; groups override it
     /// with a closed form that skips the operator.
     fn dcay_left_dual_apply(xi: &Self::Algebra, mu: &Self::Algebra) -> Self::Algebra {
@@ -236,6 +291,14 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     #[inline]
     fn compose_tau_split(g: &G, theta: f64, xi: &G::Algebra) -> G {
         G::cay_split_compose(g, theta, xi)
+    }
+    #[inline]
+    fn tau_split_coadjoint_increment(theta: f64, xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::cay_split_coadjoint_increment(theta, xi, mu)
+    }
+    #[inline]
+    fn midpoint_base_momentum(a: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
+        G::cay_midpoint_base_momentum(a, mu)
     }
     #[inline]
     fn dtau_left_dual_apply(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {

@@ -123,6 +123,25 @@ impl<const N: usize> Vector for SVector<f64, N> {
     fn norm(&self) -> f64 {
         nalgebra::Matrix::norm(self)
     }
+    /// Unrolled, without `f64::max`'s NaN branches (a NaN entry is skipped, as `f64::max` does).
+    #[inline]
+    fn norm_max(&self) -> f64 {
+        self.iter().fold(0.0, |m, x| {
+            let a = x.abs();
+            if a > m {
+                a
+            } else {
+                m
+            }
+        })
+    }
+    /// Branch-free: `x − x` is 0 for a finite x and NaN for NaN and ±∞, so the sum is 0 exactly
+    /// when every entry is finite.
+    #[inline]
+    #[allow(clippy::eq_op)] // x − x is the point
+    fn is_finite(&self) -> bool {
+        self.iter().fold(0.0, |s, x| s + (x - x)) == 0.0
+    }
 }
 
 impl Vector for Col<f64> {
@@ -155,5 +174,43 @@ impl Vector for Col<f64> {
     }
     fn from_col(c: &Col<f64>) -> Self {
         c.clone()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Vector;
+    use nalgebra::{SVector, Vector3};
+
+    /// The stack vectors' unrolled `is_finite` and `norm_max` agree with the element-wise
+    /// definitions (the trait's provided forms) for NaN and ±∞ in every position and for huge,
+    /// tiny and signed entries.
+    #[test]
+    fn fixed_size_is_finite_and_norm_max_match_the_definitions() {
+        let specials = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+        for i in 0..3 {
+            for x in specials {
+                let mut v = Vector3::new(1.0, -2.0, f64::MAX);
+                v[i] = x;
+                assert!(!Vector::is_finite(&v), "{v:?}");
+            }
+        }
+        for v in [
+            Vector3::new(f64::MAX, -f64::MAX, f64::MIN_POSITIVE),
+            Vector3::new(-0.0, 5e-324, -3.0),
+            Vector3::zeros(),
+        ] {
+            assert!(Vector::is_finite(&v));
+            let plain = (0..3).fold(0.0, |m, i| f64::max(m, v[i].abs()));
+            assert_eq!(v.norm_max(), plain);
+        }
+        let six = SVector::<f64, 6>::from_fn(|i, _| (i as f64 - 2.5) * 1e3);
+        assert_eq!(six.norm_max(), 2500.0);
+        let with_nan = Vector3::new(f64::NAN, -4.0, 1.0);
+        assert_eq!(
+            with_nan.norm_max(),
+            4.0,
+            "a NaN entry is skipped, as f64::max does"
+        );
     }
 }

@@ -21,7 +21,7 @@ use crate::lie_poisson::check_state;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use core::cell::OnceCell;
-use lie_groups::{LieGroup, So3};
+use lie_groups::{LieGroup, So3, Vector};
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 /// Explicit RK4 on (q, Π) with quaternion renormalisation after each step, for any system on SO(3).
@@ -31,7 +31,7 @@ use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 ///
 /// ```
 /// use integrators::{baselines::QuaternionRk4, Integrator, systems::RigidBody};
-/// use lie_groups::{LieGroup, So3};
+/// use lie_groups::{LieGroup, So3, Vector};
 /// use nalgebra::Vector3;
 ///
 /// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
@@ -45,9 +45,11 @@ pub struct QuaternionRk4<S: System<So3>> {
     system: S,
     t: f64,
     pi: Vector3<f64>,
-    /// The unit quaternion and the rotation matrix it represents, computed only when
-    /// [`Integrator::configuration`] asks for it (a cell, so that it can return a reference).
-    attitude: Option<(Quaternion<f64>, OnceCell<So3>)>,
+    /// The unit quaternion of the attitude, where it is reconstructed.
+    q: Option<Quaternion<f64>>,
+    /// The rotation matrix R(q), computed only when [`Integrator::configuration`] asks for it (a
+    /// cell, so that it can return a reference); emptied by every step.
+    rotation: OnceCell<So3>,
 }
 
 /// `½ q ⊗ (0, Ω)`: the quaternion velocity of `Ṙ = R Ω̂`.
@@ -84,12 +86,14 @@ impl<S: System<So3>> QuaternionRk4<S> {
     pub fn new(system: S, pi0: Vector3<f64>, r0: Option<So3>) -> Result<Self, IntegratorError> {
         check_state(&system, &pi0, "momentum Π", r0.as_ref())?;
         // R₀ is kept exactly as given (not re-derived from q₀) until the first step.
-        let attitude = r0.map(|r| (UnitQuaternion::from(r).into_inner(), OnceCell::from(r)));
+        let q = r0.map(|r| UnitQuaternion::from(r).into_inner());
+        let rotation = r0.map_or_else(OnceCell::new, OnceCell::from);
         Ok(Self {
             system,
             t: 0.0,
             pi: pi0,
-            attitude,
+            q,
+            rotation,
         })
     }
     /// The system.
@@ -98,13 +102,45 @@ impl<S: System<So3>> QuaternionRk4<S> {
     }
     /// The unit quaternion of the attitude, where it is reconstructed.
     pub fn quaternion(&self) -> Option<UnitQuaternion<f64>> {
-        self.attitude
-            .as_ref()
-            .map(|(q, _)| UnitQuaternion::new_unchecked(*q))
+        self.q.map(UnitQuaternion::new_unchecked)
+    }
+
+    /// One classical RK4 step of (q, Π) from t (q not renormalised), written as one would by hand:
+    /// a function of its own, with the state in registers and no check between the stages.
+    #[inline(never)]
+    fn advance(
+        &self,
+        t: f64,
+        q: Quaternion<f64>,
+        pi: Vector3<f64>,
+        h: f64,
+    ) -> (Quaternion<f64>, Vector3<f64>) {
+        let half = 0.5 * h;
+        let (l1, k1) = self.rate(t, &q, &pi);
+        let (l2, k2) = self.rate(t + half, &(q + l1 * half), &(pi + k1 * half));
+        let (l3, k3) = self.rate(t + half, &(q + l2 * half), &(pi + k2 * half));
+        let (l4, k4) = self.rate(t + h, &(q + l3 * h), &(pi + k3 * h));
+        (
+            q + (l1 + (l2 + l3) * 2.0 + l4) * (h / 6.0),
+            pi + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0),
+        )
+    }
+
+    /// `(q̇, Π̇)` at a stage; always inlined (a stage left out of line, as the compiler chose for
+    /// one of four, cost the step a third).
+    #[inline(always)]
+    fn rate(
+        &self,
+        t: f64,
+        q: &Quaternion<f64>,
+        pi: &Vector3<f64>,
+    ) -> (Quaternion<f64>, Vector3<f64>) {
+        let [w, dpi] = self.momentum_rate(t, Some(q), pi);
+        (quaternion_rate(q, &w), dpi)
     }
 
     /// `Π̇ = ad*_Ω Π + F(R) + F_ext(t, R, Ω)`, Ω = ∂h/∂Π; returns (Ω, Π̇).
-    #[inline]
+    #[inline(always)]
     fn momentum_rate(
         &self,
         t: f64,
@@ -138,7 +174,7 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
         let pi = self.pi;
         let half = 0.5 * h;
         let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
-        match self.attitude.as_ref() {
+        match self.q {
             None => {
                 // Π alone (nothing reads R: the momentum equation does not involve it).
                 let [_, k1] = self.momentum_rate(t0, None, &pi);
@@ -146,37 +182,24 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
                 let [_, k3] = self.momentum_rate(tm, None, &(pi + k2 * half));
                 let [_, k4] = self.momentum_rate(t1, None, &(pi + k3 * h));
                 let pi1 = pi + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
-                if !pi1.iter().all(|x| x.is_finite()) {
+                if !Vector::is_finite(&pi1) {
                     return Err(IntegratorError::NonFinite {
                         what: "momentum Π_{k+1}",
                     });
                 }
                 self.pi = pi1;
             }
-            Some((q, _)) => {
-                let q = *q;
-                let [w1, k1] = self.momentum_rate(t0, Some(&q), &pi);
-                let l1 = quaternion_rate(&q, &w1);
-                let (q2, p2) = (q + l1 * half, pi + k1 * half);
-                let [w2, k2] = self.momentum_rate(tm, Some(&q2), &p2);
-                let l2 = quaternion_rate(&q2, &w2);
-                let (q3, p3) = (q + l2 * half, pi + k2 * half);
-                let [w3, k3] = self.momentum_rate(tm, Some(&q3), &p3);
-                let l3 = quaternion_rate(&q3, &w3);
-                let (q4, p4) = (q + l3 * h, pi + k3 * h);
-                let [w4, k4] = self.momentum_rate(t1, Some(&q4), &p4);
-                let l4 = quaternion_rate(&q4, &w4);
-                let pi1 = pi + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
-                let q1 = q + (l1 + (l2 + l3) * 2.0 + l4) * (h / 6.0);
+            Some(q) => {
+                let (q1, pi1) = self.advance(t0, q, pi, h);
                 let n = q1.norm();
-                if !pi1.iter().all(|x| x.is_finite()) || !n.is_finite() || n == 0.0 {
+                if !(Vector::is_finite(&pi1) && n.is_finite() && n > 0.0) {
                     return Err(IntegratorError::NonFinite {
                         what: "RK4 state (q, Π)_{k+1}",
                     });
                 }
                 // Renormalisation: the one projection this baseline makes.
-                let q1 = q1 / n;
-                self.attitude = Some((q1, OnceCell::new()));
+                self.q = Some(q1 / n);
+                self.rotation = OnceCell::new();
                 self.pi = pi1;
             }
         }
@@ -201,9 +224,9 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
         )
     }
     fn configuration(&self) -> Option<&So3> {
-        self.attitude
+        self.q
             .as_ref()
-            .map(|(q, r)| r.get_or_init(|| rotation(q)))
+            .map(|q| self.rotation.get_or_init(|| rotation(q)))
     }
     fn energy(&self) -> f64 {
         self.system.energy(&self.pi, self.configuration())

@@ -70,9 +70,15 @@ impl RigidBody {
     pub fn inertia(&self) -> &Matrix3<f64> {
         self.inner.inertia()
     }
-    /// The angular velocity Ω = 𝕀⁻¹Π.
+    /// The angular velocity Ω = 𝕀⁻¹Π: `Πᵢ/Iᵢ` for a diagonal 𝕀 (three products, what a
+    /// hand-written step does, and each entry rounded once), else the product with 𝕀⁻¹.
+    #[inline]
     pub fn angular_velocity(&self, pi: &Vector3<f64>) -> Vector3<f64> {
-        self.inner.inertia_inv() * pi
+        if self.diagonal {
+            pi.component_mul(&self.inv_moments)
+        } else {
+            self.inner.inertia_inv() * pi
+        }
     }
     /// Euler's equations `Π̇ = Π × Ω`.
     pub fn euler_rhs(&self, pi: &Vector3<f64>) -> Vector3<f64> {
@@ -81,15 +87,15 @@ impl RigidBody {
 }
 
 impl System<So3> for RigidBody {
-    /// `h(Π) = ½ Π·𝕀⁻¹Π`.
+    /// `h(Π) = ½ Π·𝕀⁻¹Π` (= ½ Π·Ω with Ω from [`RigidBody::angular_velocity`]).
     #[inline]
     fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
-        self.inner.hamiltonian(mu)
+        0.5 * mu.dot(&self.angular_velocity(mu))
     }
-    /// Ω = 𝕀⁻¹Π.
+    /// Ω = 𝕀⁻¹Π ([`RigidBody::angular_velocity`]).
     #[inline]
     fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
-        self.inner.velocity(mu)
+        self.angular_velocity(mu)
     }
     /// 𝕀⁻¹.
     #[inline]
@@ -121,7 +127,7 @@ impl SplitSystem<So3> for RigidBody {
     }
     /// For a diagonal 𝕀, a plane rotation of two coordinates of Π and of two columns of R (one
     /// `sin_cos` without a libm call for |tωᵢ| ≤ π/2, 16 flops); otherwise the generic form.
-    #[inline]
+    #[inline(always)]
     fn piece_flow(&self, i: usize, t: f64, mu: &mut Vector3<f64>, g: Option<&mut So3>) {
         if !self.diagonal {
             let e = So3::exp(&self.piece_velocity(i, mu).scale(t));
@@ -131,21 +137,19 @@ impl SplitSystem<So3> for RigidBody {
             }
             return;
         }
-        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let (j, k) = match i {
+            0 => (1, 2),
+            1 => (2, 0),
+            _ => (0, 1),
+        };
         let (s, c) = sin_cos(t * mu[i] * self.inv_moments[i]);
         // Π ← exp(−α êᵢ) Π: Π̇ = Π × ωeᵢ turns (Πⱼ, Πₖ) by −α in their plane.
         let (pj, pk) = (mu[j], mu[k]);
         mu[j] = c * pj + s * pk;
         mu[k] = c * pk - s * pj;
-        // R ← R exp(α êᵢ): columns j and k of R turn by +α.
+        // R ← R exp(α êᵢ): columns j and k of R turn by +α, in place.
         if let Some(g) = g {
-            let mut r = *g.as_matrix();
-            for row in 0..3 {
-                let (rj, rk) = (r[(row, j)], r[(row, k)]);
-                r[(row, j)] = c * rj + s * rk;
-                r[(row, k)] = c * rk - s * rj;
-            }
-            *g = So3::from_matrix_unchecked(&r);
+            g.rotate_about_body_axis(i, s, c);
         }
     }
 }
