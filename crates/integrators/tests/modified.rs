@@ -253,7 +253,10 @@ fn invariants_of<T: ModifiedTau>(scheme: ModifiedScheme) {
     );
     assert!(cmax < 1e-12, "Casimir drift {cmax}");
     assert!(mmax < 1e-11, "momentum map drift {mmax}");
-    assert!(last < 1.5 * first + 1e-15, "energy drift: {first} → {last}");
+    // Drift beyond round-off: the order-6 exp step's truncation error is only 2e-13 here, and the
+    // rounding of 10⁵ implicit steps adds up to ~5e-13 by itself (~7e-18 a step, the same slight
+    // bias as the exact flow's, docs/work-precision.md), hence the 1e-12 allowance.
+    assert!(last < 1.5 * first + 1e-12, "energy drift: {first} → {last}");
     assert!(first < 1e-4, "energy error {first}");
 }
 
