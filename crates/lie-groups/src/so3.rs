@@ -803,7 +803,7 @@ impl CayleyGroup for So3 {
     /// vector ω/2, and Gibbs vectors compose as `(a + b + a × b)/(1 − a·b)` (the cross term
     /// vanishing for parallel ones). Used while the denominator is at least ½ (a total angle up to
     /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products. The
-    /// coefficients of `cay(ω/den) − I = A ω̂ + B ω̂²` come from [`cay_split_coeffs`] (one
+    /// coefficients of `cay(ω/den) − I = A ω̂ + B ω̂²` come from `cay_split_coeffs` (one
     /// division, shared with [`CayleyGroup::cay_split_coadjoint_increment`] of the same step).
     #[inline]
     fn cay_split_compose(g: &Self, theta: f64, w: &Vector3<f64>) -> Self {
