@@ -72,9 +72,9 @@ pub struct SolverConfig {
     /// Relative tolerance on the error of ξ, estimated from the updates (see the module page):
     /// stop when `ρ/(1−ρ) ‖Δξ‖_max ≤ tolerance · ‖ξ‖_max`.
     /// The default 1e-14 is ~50 ulps: the residual itself is evaluated with a relative round-off
-    /// of a few ulps. Tighter values are met when the iteration reaches a floating-point fixed
-    /// point (the update no longer changes ξ); otherwise round-off noise in the updates may keep
-    /// them from being met ([`IntegratorError::NoConvergence`]).
+    /// of a few ulps. Values below the rounding floor 8ε ≈ 1.8e-15 are taken as that floor: the
+    /// iteration stops as converged as floating point allows (it used to cycle between
+    /// neighbouring floats into [`IntegratorError::NoConvergence`] with a residual of 1e-16).
     pub tolerance: f64,
     /// Maximum number of iterations before [`IntegratorError::NoConvergence`].
     pub max_iterations: usize,
@@ -184,6 +184,10 @@ pub fn solve<G: LieGroup, E>(
     // estimated to contract better (a ratio of two updates measures the contraction only along
     // the current error, and underestimates it before the iteration is asymptotic); without one,
     // the first update is its own estimate (rate 1).
+    // A tolerance below the rounding of ξ cannot be certified by updates that are themselves
+    // rounding: it is raised to that floor (ROUNDING_UPDATES ulps), where the iteration is as
+    // converged as floating point allows, instead of cycling between neighbouring floats.
+    let tolerance = config.tolerance.max(ROUNDING_UPDATES * f64::EPSILON);
     let floor = prior.filter(|_| chord.is_some());
     let mut rate = floor.unwrap_or(1.0);
     for it in 1..=config.max_iterations {
@@ -248,7 +252,7 @@ pub fn solve<G: LieGroup, E>(
         } else {
             dn
         };
-        if unchanged || error_estimate <= config.tolerance * xi.norm_max() {
+        if unchanged || error_estimate <= tolerance * xi.norm_max() {
             return Ok(Solution {
                 xi,
                 iterations: it,
@@ -311,6 +315,45 @@ mod tests {
         assert_eq!(solution.xi, xi0);
         assert_eq!(solution.iterations, 1);
         assert_eq!(solution.evaluation, Some(xi0));
+    }
+
+    /// A residual whose rounding never lets the iteration settle: r(ξ) = (ξ − ξ*) + δ sign(ξ − ξ*)
+    /// with δ one ulp of ξ* sends ξ* + δ to ξ* − δ and back, forever (the two-float cycle of an
+    /// iteration at the rounding floor of its residual). With a tolerance below that floor it ran
+    /// into NoConvergence; now it stops there, within two ulps of the solution.
+    #[test]
+    fn a_tolerance_below_the_rounding_floor_stops_at_the_floor() {
+        let target = Vector3::new(1.0, -2.0, 0.5);
+        let delta = f64::EPSILON * 2.0;
+        let evaluate = |xi: &Vector3<f64>| {
+            let d = xi - target;
+            (
+                d + d.map(|x| delta * if x == 0.0 { 0.0 } else { x.signum() }),
+                (),
+            )
+        };
+        for kind in [
+            SolverKind::FixedPoint,
+            SolverKind::Newton,
+            SolverKind::SimplifiedNewton,
+        ] {
+            let config = SolverConfig {
+                kind,
+                tolerance: 1e-17,
+                ..SolverConfig::default()
+            };
+            let solution = solve::<So3, ()>(
+                &config,
+                0.1,
+                target + Vector3::repeat(delta),
+                &mut None,
+                None,
+                evaluate,
+                |_, _| Matrix3::identity(),
+            )
+            .unwrap_or_else(|e| panic!("{kind:?}: {e}"));
+            assert!((solution.xi - target).amax() <= 2.0 * delta, "{kind:?}");
+        }
     }
 
     /// The error estimate ρ/(1−ρ)‖Δξ‖ bounds what a slowly contracting iteration leaves: for

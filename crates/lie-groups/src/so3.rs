@@ -326,14 +326,14 @@ impl So3 {
 
     /// `R ← R exp(α êᵢ)` in place, from `(sin α, cos α)`: the rotation about the body axis eᵢ
     /// turns columns j = i+1 and k = i+2 (mod 3) of R, `(rⱼ, rₖ) ← (c rⱼ + s rₖ, c rₖ − s rⱼ)` —
-    /// 12 flops, R rounded once; the splittings' principal-axis flows. Panics if i > 2.
+    /// 12 flops, R rounded once; the splittings' principal-axis flows. The axis index is taken
+    /// mod 3.
     #[inline]
     pub fn rotate_about_body_axis(&mut self, i: usize, sin: f64, cos: f64) {
-        let (j, k) = match i {
+        let (j, k) = match i % 3 {
             0 => (1, 2),
             1 => (2, 0),
-            2 => (0, 1),
-            _ => panic!("So3::rotate_about_body_axis: axis {i} of 0, 1, 2"),
+            _ => (0, 1),
         };
         for row in 0..3 {
             let (rj, rk) = (self.r[(row, j)], self.r[(row, k)]);

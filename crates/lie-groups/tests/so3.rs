@@ -158,3 +158,21 @@ fn so3_exp_dual_derivative_is_continuous_across_the_small_angle_switch() {
         (below - above).amax()
     );
 }
+
+/// `rotate_about_body_axis(i, sin α, cos α)` is `R exp(α eᵢ)` for each body axis (and the index is
+/// taken mod 3), to round-off.
+#[test]
+fn rotate_about_body_axis_is_composition_with_the_axis_exponential() {
+    let r0 = So3::exp(&nalgebra::Vector3::new(0.4, -1.1, 0.7));
+    for i in 0..6 {
+        for alpha in [0.0, 1e-9, 0.3, -2.0, 3.1] {
+            let mut r = r0;
+            r.rotate_about_body_axis(i, f64::sin(alpha), f64::cos(alpha));
+            let mut e = nalgebra::Vector3::zeros();
+            e[i % 3] = alpha;
+            let want = r0.compose(&So3::exp(&e));
+            let err = (r.as_matrix() - want.as_matrix()).amax();
+            assert!(err < 1e-15, "axis {i}, α = {alpha}: {err:e}");
+        }
+    }
+}
