@@ -284,9 +284,9 @@ const FLOOR: f64 = 1e-12;
 /// method (τ = exp and Cayley), θ = ½ Euler–Poincaré and the Strang splitting, steps from h = 4
 /// down (a step that fails — τ = exp beyond its domain — is skipped): each within 0.2 of 6.
 ///
-/// Euler–Poincaré runs with the solver tolerance 1e-16 (met at the iteration's floating-point
-/// fixed point): with the default 1e-14 the stopping rule's bias, summed over thousands of
-/// stages, stalls its errors at ~5e-12, which bends the fit.
+/// Euler–Poincaré runs with the solver tolerance 1e-16 (below the rounding floor 8ε, so met at
+/// that floor; `SolverConfig::tolerance`): with the default 1e-14 the stopping rule's bias,
+/// summed over thousands of stages, stalls its errors at ~5e-12, which bends the fit.
 #[test]
 fn effective_orders_on_the_free_rigid_body() {
     let body = RigidBody::principal(2.0, 3.0, 4.0).unwrap();
