@@ -32,7 +32,8 @@
 //!   state is read ([`processing::Processed`]).
 //! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
 //! - [`forces`]: external forces and controls `F_ext(t, g, ξ)` ([`forces::Forced`], scheduled body
-//!   torques, damping), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
+//!   torques, controls u(t) through an input map `F = B(g)u(t)` ([`forces::ControlInput`]),
+//!   damping and quadratic drag), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
 //!   Lagrange–d'Alembert way (`tests/forces.rs`: orders 2/1/4, exact momentum-map balance) and by
 //!   the splittings in their kicks (`tests/forced_splitting.rs`: a torque keeps Blanes–Moan 4 at
 //!   order 4.0, damping makes every splitting order 2.0, the momentum map moves by the applied
@@ -46,7 +47,10 @@
 //! and `docs/work-precision.md` of the repository.
 //!
 //! A system is anything implementing [`System`] (reduced Hamiltonian h(μ), its derivatives, the
-//! Legendre map, an optional potential V(g) and Casimir); [`systems`] holds concrete ones, and
+//! Legendre map, an optional potential V(g) and Casimir); [`systems`] holds concrete ones — the
+//! rigid bodies, and the vehicles of docs/vehicles.md: a spacecraft with reaction wheels on
+//! SO(3) × ℝᴷ, an underwater vehicle and a quadrotor on SE(3), the 3D pendulum, N bodies on
+//! springs on SE(3)ᴺ — and
 //! [`derivative_check`] compares a hand-written system's derivatives with finite differences (see
 //! docs/custom-systems.md and `examples/custom_system.rs` of the repository). Every
 //! integrator implements [`Integrator`] (step, time, μ, optional g, energy, Casimir), so one generic

@@ -221,16 +221,13 @@ fn rk4_satellite(
 ) -> DVector<f64> {
     let iinv = sys.inertia().try_inverse().unwrap();
     let m = sys.mass();
-    let mut y0 = DVector::zeros(18);
-    y0.rows_mut(0, 9)
-        .copy_from_slice(g0.rotation().as_matrix().as_slice());
-    y0.rows_mut(9, 3).copy_from(g0.translation());
-    y0.rows_mut(12, 6).copy_from(mu0);
+    let y0 = DVector::from_vec(pack_se3(g0, mu0));
     let f = |y: &DVector<f64>| {
-        let r = Matrix3::from_column_slice(&y.as_slice()[0..9]);
-        let x = Vector3::from_column_slice(&y.as_slice()[9..12]);
-        let pi = Vector3::from_column_slice(&y.as_slice()[12..15]);
-        let p = Vector3::from_column_slice(&y.as_slice()[15..18]);
+        let (r, x, mu) = unpack_se3(y.as_slice());
+        let (pi, p) = (
+            mu.fixed_rows::<3>(0).into_owned(),
+            mu.fixed_rows::<3>(3).into_owned(),
+        );
         // The potential needs a group element: build it without projection (R drifts by O(h⁵)).
         let g = Se3::from_parts(So3::from_matrix_unchecked(&r), x);
         let force = -sys.potential_differential(&g);

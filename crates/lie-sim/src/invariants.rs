@@ -9,43 +9,70 @@
 //!   |P|² on SE(2) and SE(3)), where it has one;
 //! - momentum map: `max_k ‖P(J_k − J₀)‖₂ / ‖J₀‖₂` (absolute when J₀ = 0), with
 //!   `J = Ad*_{g⁻¹} μ` the spatial momentum map ([`crate::sim::Simulation::spatial_momentum`]) and
-//!   P the projection on the components the flow conserves ([`conserved_momentum_map`]); on the
-//!   free rigid body `|R Π − R₀Π₀| / |R₀Π₀|`, on the heavy top `|e₃·(R Π − R₀Π₀)| / |R₀Π₀|`.
-//!   Only where g is reconstructed and the system keeps some part of J.
+//!   P the linear map onto the quantities the flow conserves ([`conserved_momentum_map`]: each a
+//!   component of J or, for coupled bodies, a sum of components); on the free rigid body
+//!   `|R Π − R₀Π₀| / |R₀Π₀|`, on the heavy top `|e₃·(R Π − R₀Π₀)| / |R₀Π₀|`. Only where g is
+//!   reconstructed and the system keeps some part of J.
 
 use crate::run::relative_error;
 use crate::scene::System;
 use crate::sim::Simulation;
 
-/// The components of the spatial momentum map `J = Ad*_{g⁻¹} μ` (in the basis of μ) that the
-/// exact flow of `system` conserves, or `None` when it conserves none (or forces act):
+/// The quantities conserved by the exact flow of `system`, each the sum of the listed components
+/// of the spatial momentum map `J = Ad*_{g⁻¹} μ` (in the basis of μ), or `None` when it conserves
+/// none:
 ///
 /// - free rigid body, free SE(3) body, free SE(2) body, SO(n) geodesic: all of J (the
 ///   Hamiltonian is left-invariant);
-/// - heavy top: `J₃ = e₃·R Π`, the angular momentum about the vertical (gravity is −g e₃, the
-///   potential is invariant under rotations about e₃);
+/// - heavy top (and 3D pendulum): `J₃ = e₃·R Π`, the angular momentum about the vertical (gravity
+///   is −g e₃, the potential is invariant under rotations about e₃);
 /// - satellite (SE(3) in a central field): the angular momentum about the centre,
 ///   `R Π + x × R P` (components 1–3; the field is invariant under rotations about the origin);
 /// - planar body on a spring attached at the origin, without gravity: the angular momentum about
-///   the origin (component 1); with gravity: none kept as a whole component.
-pub fn conserved_momentum_map(system: &System) -> Option<&'static [usize]> {
+///   the origin (component 1); with gravity: none kept as a whole component;
+/// - gyrostat: `R Π` (components 1–3) under wheel torques alone (internal: they act on p), all of
+///   J = (RΠ, p) unforced; a platform torque keeps none;
+/// - underwater vehicle and quadrotor (gravity along −e₃): the vertical angular momentum L₃ and
+///   the horizontal linear momentum p₁, p₂ (components 3, 4, 5), also p₃ for a neutrally buoyant
+///   vehicle (W = B) and everything for a quadrotor without gravity; none under thrust or drag;
+/// - coupled bodies: the total spatial momentum Σ_k J_k, component by component (the springs are
+///   invariant under moving every body together).
+///
+/// Forces keep none of it, except the gyrostat's wheel torques.
+pub fn conserved_momentum_map(system: &System) -> Option<Vec<Vec<usize>>> {
+    let each = |parts: &[usize]| Some(parts.iter().map(|&i| vec![i]).collect());
+    let all = |n: usize| Some((0..n).map(|i| vec![i]).collect());
+    if let System::Gyrostat(p) = system {
+        return match &p.forces {
+            None => all(3 + p.axes.len()),
+            Some(f) if f.torque.is_none() => each(&[0, 1, 2]),
+            Some(_) => None,
+        };
+    }
     if system.forces().is_some() {
         return None;
     }
     match system {
-        System::FreeRigidBody(_) => Some(&[0, 1, 2]),
-        System::HeavyTop(_) => Some(&[2]),
-        System::RigidBodySe3(p) if p.gravitational_parameter > 0.0 => Some(&[0, 1, 2]),
-        System::RigidBodySe3(_) => Some(&[0, 1, 2, 3, 4, 5]),
+        System::FreeRigidBody(_) => each(&[0, 1, 2]),
+        System::HeavyTop(_) => each(&[2]),
+        System::RigidBodySe3(p) if p.gravitational_parameter > 0.0 => each(&[0, 1, 2]),
+        System::RigidBodySe3(_) => all(6),
         System::PlanarBodySe2(p) if p.gravity != nalgebra::Vector2::zeros() => None,
-        System::PlanarBodySe2(p) if p.stiffness != 0.0 => Some(&[0]),
-        System::PlanarBodySe2(_) => Some(&[0, 1, 2]),
-        System::GeodesicSoN(_) => Some(ALL),
+        System::PlanarBodySe2(p) if p.stiffness != 0.0 => each(&[0]),
+        System::PlanarBodySe2(_) => all(3),
+        System::GeodesicSoN(p) => all(p.n * (p.n - 1) / 2),
+        System::UnderwaterVehicle(p) if p.weight() == p.buoyancy => each(&[2, 3, 4, 5]),
+        System::UnderwaterVehicle(_) => each(&[2, 3, 4]),
+        System::Quadrotor(p) if p.gravity == 0.0 => all(6),
+        System::Quadrotor(_) => each(&[2, 3, 4]),
+        System::CoupledBodies(p) => Some(
+            (0..6)
+                .map(|i| (0..p.bodies.len()).map(|k| 6 * k + i).collect())
+                .collect(),
+        ),
+        System::Gyrostat(_) => None,
     }
 }
-
-/// Every component (the SO(n) geodesic: n(n−1)/2 of them).
-const ALL: &[usize] = &[usize::MAX];
 
 /// The running maxima of the relative drifts (see the module page), from the state a monitor was
 /// made at.
@@ -55,7 +82,7 @@ pub struct Monitor {
     c0: Option<f64>,
     j0: Option<Vec<f64>>,
     j_scale: f64,
-    parts: Option<&'static [usize]>,
+    parts: Option<Vec<Vec<usize>>>,
     /// max |E − E₀|/|E₀| so far.
     pub energy: f64,
     /// max |C − C₀|/|C₀| so far, where the system has a Casimir.
@@ -68,7 +95,7 @@ impl Monitor {
     /// A monitor of `sim` from its current state; `system` says which part of J is kept.
     pub fn new(sim: &dyn Simulation, system: &System) -> Self {
         let parts = conserved_momentum_map(system);
-        let j0 = parts.and_then(|_| sim.spatial_momentum());
+        let j0 = parts.as_ref().and_then(|_| sim.spatial_momentum());
         let j_scale = j0
             .as_ref()
             .map_or(0.0, |j| j.iter().map(|x| x * x).sum::<f64>().sqrt());
@@ -96,14 +123,16 @@ impl Monitor {
         if let (Some(j0), Some(m), Some(parts), Some(j)) = (
             &self.j0,
             self.momentum_map.as_mut(),
-            self.parts,
+            &self.parts,
             sim.spatial_momentum(),
         ) {
-            let d2: f64 = if parts == ALL {
-                j.iter().zip(j0).map(|(a, b)| (a - b) * (a - b)).sum()
-            } else {
-                parts.iter().map(|&i| (j[i] - j0[i]) * (j[i] - j0[i])).sum()
-            };
+            let d2: f64 = parts
+                .iter()
+                .map(|group| {
+                    let d: f64 = group.iter().map(|&i| j[i] - j0[i]).sum();
+                    d * d
+                })
+                .sum();
             let d = d2.sqrt();
             *m = m.max(if self.j_scale > 0.0 {
                 d / self.j_scale
@@ -189,6 +218,53 @@ mod tests {
             }
             .info()
         }
+    }
+
+    /// The coupled bodies keep the sums over the bodies; the gyrostat keeps R Π under wheel
+    /// torques and nothing under a platform torque; a neutrally buoyant vehicle keeps p₃ as well.
+    #[test]
+    fn vehicles_keep_their_parts_of_the_momentum_map() {
+        let example = |file: &str, extra: &str| {
+            let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../../examples/scenes")
+                .join(file);
+            let text = std::fs::read_to_string(path)
+                .unwrap()
+                .replace("[forces]\n", &format!("[forces]\n{extra}"));
+            Scene::parse(&text, file, file, Overrides::default())
+                .unwrap()
+                .system
+        };
+        let chain = conserved_momentum_map(&example("coupled-bodies.toml", "")).unwrap();
+        assert_eq!(chain.len(), 6);
+        assert_eq!(chain[1], vec![1, 7, 13]);
+        let wheels = example("reaction-wheel-slew.toml", "");
+        assert_eq!(
+            conserved_momentum_map(&wheels),
+            Some(vec![vec![0], vec![1], vec![2]])
+        );
+        let pushed = example("reaction-wheel-slew.toml", "torque = [0.0, 0.0, 0.01]\n");
+        assert_eq!(conserved_momentum_map(&pushed), None);
+        let auv = |b: &str| {
+            let text = std::fs::read_to_string(
+                std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("../../examples/scenes/underwater-vehicle.toml"),
+            )
+            .unwrap();
+            let text = text[..text.find("\n[forces]").unwrap()]
+                .replace("gravity = 9.81", "gravity = 10.0")
+                .replace("buoyancy = 306.0", b);
+            conserved_momentum_map(
+                &Scene::parse(&text, "auv", "auv", Overrides::default())
+                    .unwrap()
+                    .system,
+            )
+            .unwrap()
+            .len()
+        };
+        // W = 30.5 × 10 = 305: heavier than B = 306 keeps (L₃, p₁, p₂), W = B keeps p₃ too.
+        assert_eq!(auv("buoyancy = 306.0"), 3);
+        assert_eq!(auv("buoyancy = 305.0"), 4);
     }
 
     #[test]

@@ -57,8 +57,24 @@ fn norm(v: &[f64], parts: std::ops::Range<usize>) -> f64 {
 /// - SE(3), SE(2): the angular part of ξ₀ (a linear velocity is not a rate without a length);
 /// - heavy top: also the pendulum frequency `√(m g |χ| / λ_min(𝕀))`;
 /// - satellite: also the orbital rate at the initial radius, `√(GM / |x₀|³)`;
-/// - planar body on a spring: also `√(k/m)` and `√(k|c|²/I)`.
+/// - planar body on a spring: also `√(k/m)` and `√(k|c|²/I)`;
+/// - gyrostat: the platform's |Ω₀| (the wheel angles are cyclic: their spin sets no step);
+/// - underwater vehicle: also the restoring pendulum `√(|W r_G − B r_B| / λ_min(M_ωω))` and the
+///   drag's rates `dᵢᵢ/Mᵢᵢ`;
+/// - quadrotor: also `√(τ_max / λ_min(𝕀))` for its largest scheduled torque (the rate it spins up
+///   at within a second);
+/// - coupled bodies: every body's |Ω₀| and every spring's `√(κ(1/mᵢ + 1/mⱼ))` and
+///   `√(κ|a|²/λ_min(𝕀ᵢ))` (both ends);
+/// - with `[forces]`: also `1/Δt` for the shortest gap Δt between the knots of a schedule
+///   ([`crate::forces::Forces::schedule_rate`]: a longer step smears the schedule's ramps), and for
+///   the gyrostat `√(u_max/λ_min(𝕀))` of its largest scheduled torque.
 pub fn characteristic_rate(system: &System, xi0: &[f64]) -> f64 {
+    let schedules = system.forces().map_or(0.0, |f| f.schedule_rate());
+    own_rate(system, xi0).max(schedules)
+}
+
+/// [`characteristic_rate`] without the schedules' rate.
+fn own_rate(system: &System, xi0: &[f64]) -> f64 {
     match system {
         System::FreeRigidBody(_) | System::GeodesicSoN(_) => norm(xi0, 0..xi0.len()),
         System::HeavyTop(p) => {
@@ -79,6 +95,66 @@ pub fn characteristic_rate(system: &System, xi0: &[f64]) -> f64 {
                 .sqrt()
                 .max((p.stiffness * p.attachment.norm_squared() / p.inertia).sqrt());
             xi0[0].abs().max(spring)
+        }
+        System::Gyrostat(p) => {
+            let lambda_min = p.inertia.symmetric_eigenvalues().min();
+            let torque = p.forces.as_ref().map_or(0.0, |f| {
+                [&f.torque, &f.wheel_torque]
+                    .into_iter()
+                    .flatten()
+                    .map(|s| s.max_abs())
+                    .fold(0.0, f64::max)
+            });
+            norm(xi0, 0..3).max((torque / lambda_min).sqrt())
+        }
+        System::UnderwaterVehicle(p) => {
+            let m = p.mass_matrix();
+            let lambda_min = m
+                .fixed_view::<3, 3>(0, 0)
+                .into_owned()
+                .symmetric_eigenvalues()
+                .min();
+            let moment = p.center_of_gravity * p.weight() - p.center_of_buoyancy * p.buoyancy;
+            let restoring = (moment.norm() / lambda_min).sqrt();
+            let drag = p
+                .forces
+                .as_ref()
+                .and_then(|f| f.damping6())
+                .map_or(0.0, |d| {
+                    (0..6).map(|i| d[(i, i)] / m[(i, i)]).fold(0.0, f64::max)
+                });
+            norm(xi0, 0..3).max(restoring).max(drag)
+        }
+        System::Quadrotor(p) => {
+            let lambda_min = p.inertia.symmetric_eigenvalues().min();
+            let torque = p
+                .forces
+                .as_ref()
+                .and_then(|f| f.torque.as_ref())
+                .map_or(0.0, |s| s.max_abs());
+            norm(xi0, 0..3).max((torque / lambda_min).sqrt())
+        }
+        System::CoupledBodies(p) => {
+            let spin = (0..p.bodies.len())
+                .map(|k| norm(xi0, 6 * k..6 * k + 3))
+                .fold(0.0, f64::max);
+            let lambda = |k: usize| p.bodies[k].1.symmetric_eigenvalues().min();
+            let springs = p
+                .springs
+                .iter()
+                .map(|s| {
+                    let [i, j] = s.between;
+                    let (mi, mj) = (p.bodies[i].0, p.bodies[j].0);
+                    let linear = (s.stiffness * (1.0 / mi + 1.0 / mj)).sqrt();
+                    let turn = |k: usize, a: &nalgebra::Vector3<f64>| {
+                        (s.stiffness * a.norm_squared() / lambda(k)).sqrt()
+                    };
+                    linear
+                        .max(turn(i, &s.attachments[0]))
+                        .max(turn(j, &s.attachments[1]))
+                })
+                .fold(0.0, f64::max);
+            spin.max(springs)
         }
     }
 }
@@ -212,6 +288,26 @@ mod tests {
         }
         assert!(explicit(vec![0.1, 2.0], 1.0).is_err());
         assert_eq!(explicit(vec![1.0, 0.5], 1.0).unwrap().steps, [1.0, 0.5]);
+    }
+
+    /// The vehicle scenes: the quadrotor's schedules' shortest gap (0.1 s) beats its torque rate
+    /// √(0.05/0.082) = 0.78; the coupled bodies' stiffest spring √(8(1/1 + 1/2)) = √12 beats the
+    /// spins and the off-centre turns.
+    #[test]
+    fn vehicle_rates_come_from_schedules_and_springs() {
+        let example = |file: &str| {
+            let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../../examples/scenes")
+                .join(file);
+            Scene::load(&path, Default::default()).unwrap()
+        };
+        let quad = example("quadrotor.toml");
+        let rate = characteristic_rate(&quad.system, &[0.0; 6]);
+        assert!((rate - 10.0).abs() < 1e-9, "{rate}");
+        let chain = example("coupled-bodies.toml");
+        let sim = build(&chain.system, &chain.method, true, &chain.solver).unwrap();
+        let rate = characteristic_rate(&chain.system, &sim.velocity());
+        assert!((rate - 12f64.sqrt()).abs() < 1e-12, "{rate}");
     }
 
     #[test]

@@ -39,6 +39,7 @@ fn show_progress() -> bool {
 mod bounds;
 mod choose;
 mod error;
+mod forces;
 mod invariants;
 mod ladder;
 mod output;
@@ -48,6 +49,7 @@ mod scene;
 mod sim;
 mod sweep;
 mod trade;
+mod vehicles;
 
 use clap::{Args, Parser, Subcommand};
 use error::SimError;
@@ -105,7 +107,9 @@ enum Command {
     ///
     /// The ladder: with --steps, exactly those steps; otherwise from the scene's time scale ω (the
     /// initial body angular velocity |ξ₀| = |𝕀⁻¹Π₀|, or the potential's frequency when larger:
-    /// the heavy top's pendulum, the satellite's orbit, the planar body's spring): h = 1/ω (hω = 1,
+    /// the heavy top's pendulum, the satellite's orbit, the planar body's spring, the vehicle's
+    /// righting moment and drag, the springs between bodies; with [forces] also the torques' spin-up
+    /// rate and 1/Δt of a schedule's shortest gap between knots): h = 1/ω (hω = 1,
     /// near the stability edge; at most T), halved down to where an order-8 method reaches the
     /// 1e-13 reference floor over T, at most 10 levels (--levels fixes the count); finest levels
     /// are dropped when the work limit would be exceeded. Each run reports the error at T and the

@@ -6,7 +6,9 @@
 //! name = "tumbling book"            # optional, shown in the summary
 //!
 //! [system]
-//! kind = "free-rigid-body"          # free-rigid-body | heavy-top | rigid-body-se3 | planar-body-se2 | geodesic-so-n
+//! kind = "free-rigid-body"          # free-rigid-body | heavy-top (= pendulum-3d) | rigid-body-se3 |
+//!                                   #   planar-body-se2 | geodesic-so-n | gyrostat |
+//!                                   #   underwater-vehicle | quadrotor | coupled-bodies
 //! inertia = [1.0, 2.0, 3.0]         # principal moments, or a symmetric 3×3 matrix [[..], [..], [..]]
 //!
 //! [initial]
@@ -52,17 +54,21 @@
 //! kind = "momenta-on-energy-level"  # or "momenta-on-sphere"
 //! # monitor_every = 1               # energy/Casimir sampled every k steps (and the last)
 //!
-//! [forces]                          # optional (free-rigid-body, heavy-top): external forces
+//! [forces]                          # optional: external forces (keys by kind: crate::forces)
 //! torque = [0.0, 0.0, 0.1]          # constant body torque, or a piecewise-linear schedule:
 //! # torque = { times = [0.0, 5.0], values = [[0.0, 0.0, 0.1], [0.0, 0.0, 0.0]] }
-//! damping = 0.05                    # F = −D Ω: a number c (D = c I), 3 entries, or 3×3 symmetric
+//! damping = 0.05                    # F = −D ξ: a number c (D = c I), n entries, or n×n symmetric
+//! # force, thrust, wheel_torque: schedules; quadratic_drag: Fᵢ = −dᵢ|ξᵢ|ξᵢ
 //! ```
 //!
-//! `[forces]` is applied in the discrete Lagrange–d'Alembert way (`integrators::forces`) by
-//! `lie-poisson`, `euler-poincare`, `rk4` and `rkmk4`, and in the kicks of `splitting` and
-//! `kinetic-kick` (exactly for a torque, by the implicit midpoint rule for damping: order 2);
-//! `exact`, `euler-arnold` and `modified` refuse it. The torque
-//! schedule holds its first value before `times[0]` and its last after the end.
+//! `[forces]` ([`crate::forces`]: `torque` and `damping` for free-rigid-body and heavy-top;
+//! `torque` and `wheel_torque` for gyrostat; `torque`, `force`, `damping`, `quadratic_drag` for
+//! underwater-vehicle; `thrust`, `torque`, `damping`, `quadratic_drag` for quadrotor) is applied
+//! in the discrete Lagrange–d'Alembert way (`integrators::forces`) by `lie-poisson`,
+//! `euler-poincare`, `rk4` and `rkmk4`, and in the kicks of `splitting` and `kinetic-kick`
+//! (exactly for torques, forces, thrust and wheel torques, by the implicit midpoint rule for
+//! damping and drag: order 2); `exact`, `euler-arnold` and `modified` refuse it. A schedule holds
+//! its first value before `times[0]` and its last after the end.
 //!
 //! `composition` names a scheme of `integrators::CompositionScheme` (`triple-jump-4|6|8|10`,
 //! `suzuki-4|6|8|10`, `mclachlan-4`, `kahan-li-6`, `kahan-li-8`, `mclachlan-8`,
@@ -109,6 +115,10 @@
 //! | `rigid-body-se3` | `inertia`, `mass`, `gravitational_parameter` GM ≥ 0 (0: free) | (Π, P), 6 | rotation | x, 3 |
 //! | `planar-body-se2` | `inertia` J (one number), `mass`, `stiffness` k, `attachment` c, `gravity` γ (2) | (L, Pₓ, P_y), 3 | `{ angle = φ }` | x, 2 |
 //! | `geodesic-so-n` | `n`, `inertia` (n diagonal entries of J) | n(n−1)/2 | `{ matrix = … }` n×n | — |
+//! | `gyrostat`, `underwater-vehicle`, `quadrotor`, `coupled-bodies` | see [`crate::vehicles`] | | | |
+//!
+//! `pendulum-3d` is read as `heavy-top`: the 3D pendulum (a rigid body on a fixed pivot, J about
+//! the pivot, ρ = `center_of_mass`) is the heavy top (`integrators::systems::Pendulum3d`).
 //!
 //! A rotation is `{ rotation_vector = [x, y, z] }` (R = exp(ω̂)), `{ quaternion = [w, x, y, z] }`
 //! (scalar first, unit norm to 10⁻⁶, then normalised) or `{ matrix = [[…], […], […]] }` (checked by
@@ -122,6 +132,11 @@
 
 use crate::error::SimError;
 use integrators::processing::ProcessingScheme;
+use crate::forces::{check_forces, ForceSlots, FORCED_KINDS};
+pub use crate::forces::{Forces, RawForces};
+pub use crate::vehicles::{
+    CoupledBodies, Gyrostat, Quadrotor, RawBody, RawBodyState, RawSpring, UnderwaterVehicle,
+};
 use integrators::splitting::SplittingScheme;
 use integrators::CompositionScheme;
 use lie_groups::{LieGroup, So3};
@@ -150,7 +165,9 @@ pub const MAX_STEPS: f64 = 1e11;
 pub enum SystemKind {
     /// Free rigid body on SO(3): Π' = Π × Ω, Ω = I⁻¹Π, R' = R Ω̂.
     FreeRigidBody,
-    /// Heavy top: rigid body on SO(3) in uniform gravity with a body-fixed centre of mass.
+    /// Heavy top: rigid body on SO(3) in uniform gravity with a body-fixed centre of mass. Also
+    /// read as `pendulum-3d`: the 3D pendulum is the heavy top (`integrators::systems::Pendulum3d`).
+    #[serde(alias = "pendulum-3d")]
     HeavyTop,
     /// Rigid body on SE(3): free, or a satellite in a central gravity field.
     RigidBodySe3,
@@ -158,6 +175,14 @@ pub enum SystemKind {
     PlanarBodySe2,
     /// Euler–Arnold geodesic on SO(n) (the generalised rigid body).
     GeodesicSoN,
+    /// A spacecraft with reaction wheels on SO(3) × ℝᴷ.
+    Gyrostat,
+    /// An underwater vehicle on SE(3): full mass matrix with added mass, restoring force.
+    UnderwaterVehicle,
+    /// A quadrotor on SE(3): gravity, body-axis thrust, body torques.
+    Quadrotor,
+    /// N rigid bodies on SE(3)ᴺ coupled by springs.
+    CoupledBodies,
 }
 
 impl SystemKind {
@@ -169,6 +194,10 @@ impl SystemKind {
             Self::RigidBodySe3 => "rigid-body-se3",
             Self::PlanarBodySe2 => "planar-body-se2",
             Self::GeodesicSoN => "geodesic-so-n",
+            Self::Gyrostat => "gyrostat",
+            Self::UnderwaterVehicle => "underwater-vehicle",
+            Self::Quadrotor => "quadrotor",
+            Self::CoupledBodies => "coupled-bodies",
         }
     }
 }
@@ -397,7 +426,8 @@ pub struct RawScene {
     pub output: RawOutput,
     /// `[sweep]` (optional): the ensemble run by `lie-sim sweep`.
     pub sweep: Option<RawSweep>,
-    /// `[forces]` (optional): external torques and damping (free-rigid-body, heavy-top).
+    /// `[forces]` (optional): external torques, forces, thrust, wheel torques, damping and drag
+    /// (`crate::forces`).
     pub forces: Option<RawForces>,
     /// `[[events]]` (optional): zero crossings of a trajectory column to locate.
     #[serde(default)]
@@ -416,38 +446,6 @@ pub struct RawEvent {
     pub direction: Option<String>,
     /// End the run at the first crossing (default false).
     pub stop: Option<bool>,
-}
-
-/// `[forces]`: an external body torque (constant or a piecewise-linear schedule) and viscous
-/// damping `F = −D Ω`, applied in the discrete Lagrange–d'Alembert way
-/// (`integrators::forces`).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawForces {
-    /// Body torque: `[τ₁, τ₂, τ₃]`, or `{ times = [...], values = [[...], ...] }`.
-    pub torque: Option<RawSchedule>,
-    /// Damping D: a number c (D = c I), three diagonal entries, or a symmetric 3×3 matrix.
-    pub damping: Option<RawInertia>,
-}
-
-/// A constant vector or a piecewise-linear schedule of vectors.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(untagged)]
-pub enum RawSchedule {
-    /// A constant.
-    Constant(Vec<f64>),
-    /// `values[i]` at `times[i]`, linear in between, held outside.
-    Table(RawScheduleTable),
-}
-
-/// `{ times = [...], values = [[...], ...] }`.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawScheduleTable {
-    /// Strictly increasing times.
-    pub times: Vec<f64>,
-    /// One vector per time.
-    pub values: Vec<Vec<f64>>,
 }
 
 /// `[system]`: the kind and its physical parameters; which parameters apply depends on the kind.
@@ -474,6 +472,23 @@ pub struct RawSystem {
     pub gravitational_parameter: Option<f64>,
     /// n of SO(n) (geodesic-so-n).
     pub n: Option<usize>,
+    /// The wheels' unit axes aᵢ, body frame, one `[x, y, z]` per wheel (gyrostat).
+    pub wheel_axes: Option<Vec<[f64; 3]>>,
+    /// The wheels' axial inertias Jᵢ > 0 (gyrostat).
+    pub wheel_inertia: Option<Vec<f64>>,
+    /// The added-mass matrix M_A, (ω, v) ordering: 6 diagonal entries or a symmetric 6×6
+    /// (underwater-vehicle).
+    pub added_mass: Option<RawInertia>,
+    /// The buoyancy B ≥ 0, a force (underwater-vehicle).
+    pub buoyancy: Option<f64>,
+    /// The centre of buoyancy r_B, body frame (underwater-vehicle).
+    #[serde(alias = "centre_of_buoyancy")]
+    pub center_of_buoyancy: Option<[f64; 3]>,
+    /// The bodies, `{ mass, inertia }` each (coupled-bodies).
+    pub bodies: Option<Vec<RawBody>>,
+    /// The springs, `{ between = [i, j], attachments, stiffness, rest_length }` each
+    /// (coupled-bodies).
+    pub springs: Option<Vec<RawSpring>>,
 }
 
 /// One number or a list of numbers.
@@ -502,12 +517,16 @@ pub enum RawInertia {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawInitial {
-    /// Body momentum μ ∈ 𝔤* in the basis of the group's `vee`.
-    pub momentum: Vec<f64>,
+    /// Body momentum μ ∈ 𝔤* in the basis of the group's `vee` (every kind but coupled-bodies).
+    pub momentum: Option<Vec<f64>>,
     /// Attitude (default: the identity).
     pub attitude: Option<RawAttitude>,
     /// Position of the body frame's origin in space (SE(3): 3 numbers, SE(2): 2).
     pub position: Option<Vec<f64>>,
+    /// The wheels' angles φᵢ (gyrostat; default 0).
+    pub wheel_angles: Option<Vec<f64>>,
+    /// Each body's `{ momentum, position, attitude }` (coupled-bodies).
+    pub bodies: Option<Vec<RawBodyState>>,
 }
 
 /// An attitude, in one of several forms.
@@ -635,31 +654,6 @@ pub struct RigidBody {
     pub forces: Option<Forces>,
 }
 
-/// The checked `[forces]` table: a body torque schedule and a damping matrix, either optional.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Forces {
-    /// Body torque u(t).
-    pub torque: Option<integrators::forces::Schedule>,
-    /// Damping D (F = −D Ω): symmetric, finite, nonnegative diagonal.
-    pub damping: Option<Matrix3<f64>>,
-}
-
-impl Forces {
-    /// One line for the run's summary: which forces act.
-    pub fn describe(&self) -> String {
-        let torque = self.torque.as_ref().map(|s| match s.knots() {
-            1 => "constant body torque".to_string(),
-            n => format!("body torque on a {n}-knot schedule"),
-        });
-        let damping = self.damping.map(|_| "damping −D Ω".to_string());
-        let terms: Vec<String> = [torque, damping].into_iter().flatten().collect();
-        format!(
-            "{} (discrete Lagrange–d'Alembert; energy and Casimir change by their work)",
-            terms.join(" + ")
-        )
-    }
-}
-
 /// Heavy top on SO(3).
 #[derive(Debug, Clone, PartialEq)]
 pub struct HeavyTop {
@@ -743,6 +737,14 @@ pub enum System {
     PlanarBodySe2(PlanarBody),
     /// See [`GeodesicSoN`].
     GeodesicSoN(GeodesicSoN),
+    /// See [`Gyrostat`].
+    Gyrostat(Gyrostat),
+    /// See [`UnderwaterVehicle`] (boxed: its 6×6 added mass makes it the largest by far).
+    UnderwaterVehicle(Box<UnderwaterVehicle>),
+    /// See [`Quadrotor`].
+    Quadrotor(Quadrotor),
+    /// See [`CoupledBodies`].
+    CoupledBodies(CoupledBodies),
 }
 
 impl System {
@@ -753,7 +755,10 @@ impl System {
             Self::HeavyTop(_) => true,
             Self::RigidBodySe3(p) => p.gravitational_parameter > 0.0,
             Self::PlanarBodySe2(p) => p.stiffness != 0.0 || p.gravity != Vector2::zeros(),
-            Self::FreeRigidBody(_) | Self::GeodesicSoN(_) => false,
+            Self::UnderwaterVehicle(p) => p.weight() != 0.0 || p.buoyancy != 0.0,
+            Self::Quadrotor(p) => p.gravity != 0.0,
+            Self::CoupledBodies(p) => !p.springs.is_empty(),
+            Self::FreeRigidBody(_) | Self::GeodesicSoN(_) | Self::Gyrostat(_) => false,
         }
     }
 
@@ -762,8 +767,24 @@ impl System {
         match self {
             Self::FreeRigidBody(p) => p.forces.as_ref(),
             Self::HeavyTop(p) => p.forces.as_ref(),
+            Self::Gyrostat(p) => p.forces.as_ref(),
+            Self::UnderwaterVehicle(p) => p.forces.as_ref(),
+            Self::Quadrotor(p) => p.forces.as_ref(),
             _ => None,
         }
+    }
+
+    /// Attaches checked forces to the kinds of [`ForceSlots::of`]; `false` for the others.
+    fn set_forces(&mut self, forces: Forces) -> bool {
+        match self {
+            Self::FreeRigidBody(p) => p.forces = Some(forces),
+            Self::HeavyTop(p) => p.forces = Some(forces),
+            Self::Gyrostat(p) => p.forces = Some(forces),
+            Self::UnderwaterVehicle(p) => p.forces = Some(forces),
+            Self::Quadrotor(p) => p.forces = Some(forces),
+            _ => return false,
+        }
+        true
     }
 
     /// The kind of system.
@@ -774,6 +795,10 @@ impl System {
             Self::RigidBodySe3(_) => SystemKind::RigidBodySe3,
             Self::PlanarBodySe2(_) => SystemKind::PlanarBodySe2,
             Self::GeodesicSoN(_) => SystemKind::GeodesicSoN,
+            Self::Gyrostat(_) => SystemKind::Gyrostat,
+            Self::UnderwaterVehicle(_) => SystemKind::UnderwaterVehicle,
+            Self::Quadrotor(_) => SystemKind::Quadrotor,
+            Self::CoupledBodies(_) => SystemKind::CoupledBodies,
         }
     }
 }
@@ -917,19 +942,22 @@ impl Scene {
         let name = raw.name.clone().unwrap_or_else(|| stem.to_string());
         let mut system = check_system(&raw.system, &raw.initial).map_err(|(f, m)| bad(&f, m))?;
         if let Some(f) = &raw.forces {
-            let forces = check_forces(f).map_err(|(f, m)| bad(&f, m))?;
-            match &mut system {
-                System::FreeRigidBody(p) => p.forces = Some(forces),
-                System::HeavyTop(p) => p.forces = Some(forces),
-                other => {
-                    return Err(bad(
-                        "forces",
-                        format!(
-                            "[forces] applies to free-rigid-body and heavy-top scenes, not {}",
-                            other.kind()
-                        ),
-                    ))
-                }
+            let Some(slots) = ForceSlots::of(&system) else {
+                return Err(bad(
+                    "forces",
+                    format!(
+                        "[forces] applies to {FORCED_KINDS} scenes, not {}",
+                        system.kind()
+                    ),
+                ));
+            };
+            let forces =
+                check_forces(f, slots, system.kind().name()).map_err(|(f, m)| bad(&f, m))?;
+            if !system.set_forces(forces) {
+                return Err(bad(
+                    "forces",
+                    format!("{} takes no [forces]", system.kind()),
+                ));
             }
         }
 
@@ -1054,9 +1082,10 @@ pub fn steps_for(duration: f64, step: f64) -> u64 {
     n as u64
 }
 
-type FieldError = (String, String);
+/// A check's failure: the dotted field and the message.
+pub(crate) type FieldError = (String, String);
 
-fn positive(field: &str, v: f64) -> Result<f64, FieldError> {
+pub(crate) fn positive(field: &str, v: f64) -> Result<f64, FieldError> {
     if !v.is_finite() {
         Err((field.into(), format!("must be a finite number, got {v}")))
     } else if v <= 0.0 {
@@ -1066,7 +1095,7 @@ fn positive(field: &str, v: f64) -> Result<f64, FieldError> {
     }
 }
 
-fn finite_all(field: &str, v: &[f64]) -> Result<(), FieldError> {
+pub(crate) fn finite_all(field: &str, v: &[f64]) -> Result<(), FieldError> {
     match v.iter().find(|x| !x.is_finite()) {
         Some(x) => Err((field.into(), format!("must be finite, got {x}"))),
         None => Ok(()),
@@ -1316,15 +1345,28 @@ pub fn inapplicable(spec: &MethodSpec, system: &System) -> Option<String> {
              geodesic h = ½⟨M, J⁻¹M⟩ has no such splitting here (use lie-poisson or rkmk4)"
                 .into(),
         ),
+        Method::Splitting if matches!(system, System::UnderwaterVehicle(p) if !p.is_decoupled()) => {
+            Some(
+                "splitting needs h = Σ hᵢ with each piece's flow exact and explicit; this \
+                 vehicle's mass matrix couples rotation and translation (M_ωv ≠ 0: the centre \
+                 of gravity or the added mass off the body origin), so its pieces' velocities \
+                 are not constant along their flows (use lie-poisson or rkmk4)"
+                    .into(),
+            )
+        }
         Method::KineticKick
             if !matches!(
                 system,
-                System::FreeRigidBody(_) | System::HeavyTop(_) | System::RigidBodySe3(_)
+                System::FreeRigidBody(_)
+                    | System::HeavyTop(_)
+                    | System::RigidBodySe3(_)
+                    | System::Quadrotor(_)
             ) =>
         {
             Some(
                 "kinetic-kick needs the exact flow of the kinetic energy, known here for the \
-                 rigid body (free-rigid-body, heavy-top, rigid-body-se3) only; use splitting"
+                 rigid body (free-rigid-body, heavy-top, rigid-body-se3, quadrotor) only; use \
+                 splitting"
                     .into(),
             )
         }
@@ -1349,18 +1391,20 @@ pub fn euler_arnold_needs_kinetic(kind: SystemKind) -> String {
 /// so that a misplaced key is not silently ignored.
 fn allowed_keys(kind: SystemKind) -> &'static [&'static str] {
     match kind {
-        SystemKind::FreeRigidBody => &["system.inertia", "initial.attitude"],
+        SystemKind::FreeRigidBody => &["system.inertia", "initial.momentum", "initial.attitude"],
         SystemKind::HeavyTop => &[
             "system.inertia",
             "system.mass",
             "system.center_of_mass",
             "system.gravity",
+            "initial.momentum",
             "initial.attitude",
         ],
         SystemKind::RigidBodySe3 => &[
             "system.inertia",
             "system.mass",
             "system.gravitational_parameter",
+            "initial.momentum",
             "initial.attitude",
             "initial.position",
         ],
@@ -1370,10 +1414,45 @@ fn allowed_keys(kind: SystemKind) -> &'static [&'static str] {
             "system.stiffness",
             "system.attachment",
             "system.gravity",
+            "initial.momentum",
             "initial.attitude",
             "initial.position",
         ],
-        SystemKind::GeodesicSoN => &["system.inertia", "system.n", "initial.attitude"],
+        SystemKind::GeodesicSoN => &[
+            "system.inertia",
+            "system.n",
+            "initial.momentum",
+            "initial.attitude",
+        ],
+        SystemKind::Gyrostat => &[
+            "system.inertia",
+            "system.wheel_axes",
+            "system.wheel_inertia",
+            "initial.momentum",
+            "initial.attitude",
+            "initial.wheel_angles",
+        ],
+        SystemKind::UnderwaterVehicle => &[
+            "system.inertia",
+            "system.mass",
+            "system.center_of_mass",
+            "system.gravity",
+            "system.added_mass",
+            "system.buoyancy",
+            "system.center_of_buoyancy",
+            "initial.momentum",
+            "initial.attitude",
+            "initial.position",
+        ],
+        SystemKind::Quadrotor => &[
+            "system.inertia",
+            "system.mass",
+            "system.gravity",
+            "initial.momentum",
+            "initial.attitude",
+            "initial.position",
+        ],
+        SystemKind::CoupledBodies => &["system.bodies", "system.springs", "initial.bodies"],
     }
 }
 
@@ -1390,8 +1469,18 @@ fn check_keys(kind: SystemKind, s: &RawSystem, init: &RawInitial) -> Result<(), 
         ("system.n", s.n.is_some()),
         ("system.stiffness", s.stiffness.is_some()),
         ("system.attachment", s.attachment.is_some()),
+        ("system.wheel_axes", s.wheel_axes.is_some()),
+        ("system.wheel_inertia", s.wheel_inertia.is_some()),
+        ("system.added_mass", s.added_mass.is_some()),
+        ("system.buoyancy", s.buoyancy.is_some()),
+        ("system.center_of_buoyancy", s.center_of_buoyancy.is_some()),
+        ("system.bodies", s.bodies.is_some()),
+        ("system.springs", s.springs.is_some()),
+        ("initial.momentum", init.momentum.is_some()),
         ("initial.attitude", init.attitude.is_some()),
         ("initial.position", init.position.is_some()),
+        ("initial.wheel_angles", init.wheel_angles.is_some()),
+        ("initial.bodies", init.bodies.is_some()),
     ];
     let allowed = allowed_keys(kind);
     match given
@@ -1403,12 +1492,16 @@ fn check_keys(kind: SystemKind, s: &RawSystem, init: &RawInitial) -> Result<(), 
     }
 }
 
-fn required<T: Clone>(kind: SystemKind, field: &str, v: &Option<T>) -> Result<T, FieldError> {
+pub(crate) fn required<T: Clone>(
+    kind: SystemKind,
+    field: &str,
+    v: &Option<T>,
+) -> Result<T, FieldError> {
     v.clone()
         .ok_or_else(|| (field.into(), format!("is required for {kind}")))
 }
 
-fn momentum_of_len(kind: SystemKind, mu: &[f64], len: usize) -> Result<(), FieldError> {
+pub(crate) fn momentum_of_len(kind: SystemKind, mu: &[f64], len: usize) -> Result<(), FieldError> {
     if mu.len() != len {
         return Err((
             "initial.momentum".into(),
@@ -1473,69 +1566,15 @@ fn check_event(e: &RawEvent) -> Result<EventSpec, FieldError> {
     })
 }
 
-fn check_forces(f: &RawForces) -> Result<Forces, FieldError> {
-    use integrators::forces::{LinearDamping, Schedule};
-    let torque = match &f.torque {
-        None => None,
-        Some(raw) => {
-            let field = "forces.torque";
-            let schedule = match raw {
-                RawSchedule::Constant(v) => Schedule::constant(v.clone()),
-                RawSchedule::Table(t) => Schedule::new(t.times.clone(), t.values.clone()),
-            }
-            .map_err(|e| (field.to_string(), e.to_string()))?;
-            if schedule.dim() != 3 {
-                return Err((
-                    field.into(),
-                    format!("a body torque has 3 components, got {}", schedule.dim()),
-                ));
-            }
-            Some(schedule)
-        }
-    };
-    let damping = match &f.damping {
-        None => None,
-        Some(raw) => {
-            let field = "forces.damping";
-            let d = match raw {
-                RawInertia::Scalar(c) => Matrix3::identity() * *c,
-                RawInertia::Diagonal(v) if v.len() == 3 => {
-                    Matrix3::from_diagonal(&Vector3::new(v[0], v[1], v[2]))
-                }
-                RawInertia::Matrix(rows)
-                    if rows.len() == 3 && rows.iter().all(|r| r.len() == 3) =>
-                {
-                    Matrix3::from_fn(|i, j| rows[i][j])
-                }
-                _ => {
-                    return Err((
-                        field.into(),
-                        "give a number c (D = c I), 3 diagonal entries or a 3×3 matrix".into(),
-                    ))
-                }
-            };
-            LinearDamping::<lie_groups::So3>::new(d)
-                .map_err(|e| (field.to_string(), e.to_string()))?;
-            Some(d)
-        }
-    };
-    if torque.is_none() && damping.is_none() {
-        return Err((
-            "forces".into(),
-            "an empty [forces] table: give torque and/or damping".into(),
-        ));
-    }
-    Ok(Forces { torque, damping })
-}
-
 fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> {
     let kind = s.kind;
     check_keys(kind, s, init)?;
     let mass = || positive("system.mass", required(kind, "system.mass", &s.mass)?);
+    let momentum = || required(kind, "initial.momentum", &init.momentum);
     match kind {
         SystemKind::FreeRigidBody => Ok(System::FreeRigidBody(RigidBody {
             inertia: inertia3(kind, &s.inertia)?,
-            momentum: vec3("initial.momentum", &init.momentum)?,
+            momentum: vec3("initial.momentum", &momentum()?)?,
             attitude: attitude3(&init.attitude)?,
             forces: None,
         })),
@@ -1543,32 +1582,13 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
             let mass = mass()?;
             let chi = required(kind, "system.center_of_mass", &s.center_of_mass)?;
             finite_all("system.center_of_mass", &chi)?;
-            let field = "system.gravity";
-            let g = match required(kind, field, &s.gravity)? {
-                RawNumbers::Scalar(g) => g,
-                RawNumbers::List(v) if v.len() == 3 && v[0] == 0.0 && v[1] == 0.0 => -v[2],
-                RawNumbers::List(v) => {
-                    return Err((
-                        field.into(),
-                        format!(
-                            "the heavy top's gravity points along −e₃: give g or [0, 0, -g], \
-                             got {v:?}"
-                        ),
-                    ))
-                }
-            };
-            if !g.is_finite() || g < 0.0 {
-                return Err((
-                    field.into(),
-                    format!("must be a finite g ≥ 0 (gravity −g e₃), got g = {g}"),
-                ));
-            }
+            let g = gravity_down(kind, &s.gravity)?;
             Ok(System::HeavyTop(HeavyTop {
                 inertia: inertia3(kind, &s.inertia)?,
                 mass,
                 center_of_mass: Vector3::from(chi),
                 gravity: g,
-                momentum: vec3("initial.momentum", &init.momentum)?,
+                momentum: vec3("initial.momentum", &momentum()?)?,
                 attitude: attitude3(&init.attitude)?,
                 forces: None,
             }))
@@ -1582,7 +1602,8 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
                     format!("must be finite and non-negative, got {gm}"),
                 ));
             }
-            momentum_of_len(kind, &init.momentum, 6)?;
+            let mu = momentum()?;
+            momentum_of_len(kind, &mu, 6)?;
             let pos = init.position.clone().unwrap_or_else(|| vec![0.0; 3]);
             let position = vec3("initial.position", &pos)?;
             if gm > 0.0 && position.norm() == 0.0 {
@@ -1596,7 +1617,7 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
                 inertia: inertia3(kind, &s.inertia)?,
                 mass,
                 gravitational_parameter: gm,
-                momentum: Vector6::from_column_slice(&init.momentum),
+                momentum: Vector6::from_column_slice(&mu),
                 attitude: attitude3(&init.attitude)?,
                 position,
             }))
@@ -1660,14 +1681,15 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
                 ));
             }
             finite_all("initial.position", &pos)?;
-            momentum_of_len(kind, &init.momentum, 3)?;
+            let mu = momentum()?;
+            momentum_of_len(kind, &mu, 3)?;
             Ok(System::PlanarBodySe2(PlanarBody {
                 inertia,
                 mass,
                 stiffness,
                 attachment: Vector2::from(c),
                 gravity,
-                momentum: Vector3::from_column_slice(&init.momentum),
+                momentum: Vector3::from_column_slice(&mu),
                 angle,
                 position: Vector2::new(pos[0], pos[1]),
             }))
@@ -1697,7 +1719,8 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
                     ))
                 }
             };
-            momentum_of_len(kind, &init.momentum, n * (n - 1) / 2)?;
+            let mu = momentum()?;
+            momentum_of_len(kind, &mu, n * (n - 1) / 2)?;
             let attitude = match &init.attitude {
                 None => identity_flat(n),
                 Some(RawAttitude::Matrix(m)) => {
@@ -1715,14 +1738,44 @@ fn check_system(s: &RawSystem, init: &RawInitial) -> Result<System, FieldError> 
             Ok(System::GeodesicSoN(GeodesicSoN {
                 n,
                 inertia,
-                momentum: init.momentum.clone(),
+                momentum: mu,
                 attitude,
             }))
+        }
+        SystemKind::Gyrostat => crate::vehicles::check_gyrostat(s, init).map(System::Gyrostat),
+        SystemKind::UnderwaterVehicle => crate::vehicles::check_underwater_vehicle(s, init)
+            .map(|v| System::UnderwaterVehicle(Box::new(v))),
+        SystemKind::Quadrotor => crate::vehicles::check_quadrotor(s, init).map(System::Quadrotor),
+        SystemKind::CoupledBodies => {
+            crate::vehicles::check_coupled_bodies(s, init).map(System::CoupledBodies)
         }
     }
 }
 
-fn vec3(field: &str, v: &[f64]) -> Result<Vector3<f64>, FieldError> {
+/// `system.gravity` of the systems in uniform gravity along −e₃ (heavy top, quadrotor,
+/// underwater vehicle): g ≥ 0, written g or `[0, 0, -g]`.
+pub(crate) fn gravity_down(kind: SystemKind, raw: &Option<RawNumbers>) -> Result<f64, FieldError> {
+    let field = "system.gravity";
+    let g = match required(kind, field, raw)? {
+        RawNumbers::Scalar(g) => g,
+        RawNumbers::List(v) if v.len() == 3 && v[0] == 0.0 && v[1] == 0.0 => -v[2],
+        RawNumbers::List(v) => {
+            return Err((
+                field.into(),
+                format!("the {kind}'s gravity points along −e₃: give g or [0, 0, -g], got {v:?}"),
+            ))
+        }
+    };
+    if !g.is_finite() || g < 0.0 {
+        return Err((
+            field.into(),
+            format!("must be a finite g ≥ 0 (gravity −g e₃), got g = {g}"),
+        ));
+    }
+    Ok(g)
+}
+
+pub(crate) fn vec3(field: &str, v: &[f64]) -> Result<Vector3<f64>, FieldError> {
     if v.len() != 3 {
         return Err((field.into(), format!("needs 3 components, got {}", v.len())));
     }
@@ -1737,7 +1790,7 @@ fn identity_flat(n: usize) -> Vec<f64> {
 }
 
 /// An n×n matrix given row by row, flattened row-major; finite entries.
-fn square(field: &str, rows: &[Vec<f64>], n: usize) -> Result<Vec<f64>, FieldError> {
+pub(crate) fn square(field: &str, rows: &[Vec<f64>], n: usize) -> Result<Vec<f64>, FieldError> {
     if rows.len() != n || rows.iter().any(|r| r.len() != n) {
         return Err((
             field.into(),
@@ -1754,7 +1807,11 @@ fn square(field: &str, rows: &[Vec<f64>], n: usize) -> Result<Vec<f64>, FieldErr
 }
 
 /// Symmetric to 10⁻¹² relative, and positive definite (Cholesky succeeds).
-fn symmetric_positive_definite(field: &str, a: &[f64], n: usize) -> Result<(), FieldError> {
+pub(crate) fn symmetric_positive_definite(
+    field: &str,
+    a: &[f64],
+    n: usize,
+) -> Result<(), FieldError> {
     let scale = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     for i in 0..n {
         for j in 0..i {
@@ -1810,7 +1867,13 @@ fn check_special_orthogonal(field: &str, r: &[f64], n: usize) -> Result<(), Fiel
 
 fn inertia3(kind: SystemKind, raw: &Option<RawInertia>) -> Result<Matrix3<f64>, FieldError> {
     let field = "system.inertia";
-    match required(kind, field, raw)? {
+    inertia3_at(field, &required(kind, field, raw)?)
+}
+
+/// A 3×3 inertia at `field`: 3 positive principal moments or a symmetric positive definite
+/// matrix.
+pub(crate) fn inertia3_at(field: &str, raw: &RawInertia) -> Result<Matrix3<f64>, FieldError> {
+    match raw.clone() {
         RawInertia::Scalar(_) => Err((
             field.into(),
             "must be 3 principal moments or a 3×3 matrix".into(),
@@ -1838,11 +1901,20 @@ fn inertia3(kind: SystemKind, raw: &Option<RawInertia>) -> Result<Matrix3<f64>, 
 /// Quaternions are accepted when | ‖q‖ − 1 | ≤ 10⁻⁶ (six typed digits) and then normalised.
 pub const QUATERNION_TOLERANCE: f64 = 1e-6;
 
-fn attitude3(raw: &Option<RawAttitude>) -> Result<Matrix3<f64>, FieldError> {
+pub(crate) fn attitude3(raw: &Option<RawAttitude>) -> Result<Matrix3<f64>, FieldError> {
+    attitude3_at("initial.attitude", raw)
+}
+
+/// An attitude at the field `prefix` (its forms at `prefix.matrix`, `prefix.quaternion`, …); the
+/// identity when absent.
+pub(crate) fn attitude3_at(
+    prefix: &str,
+    raw: &Option<RawAttitude>,
+) -> Result<Matrix3<f64>, FieldError> {
     match raw {
         None => Ok(Matrix3::identity()),
         Some(RawAttitude::Matrix(m)) => {
-            let field = "initial.attitude.matrix";
+            let field = &format!("{prefix}.matrix");
             let flat = square(field, m, 3)?;
             // lie-groups' checked constructor: ‖RᵀR − I‖_max and det R = +1 within
             // `lie_groups::so3::ORTHOGONALITY_TOLERANCE`.
@@ -1852,11 +1924,11 @@ fn attitude3(raw: &Option<RawAttitude>) -> Result<Matrix3<f64>, FieldError> {
             Ok(r)
         }
         Some(RawAttitude::RotationVector(w)) => {
-            finite_all("initial.attitude.rotation_vector", w)?;
+            finite_all(&format!("{prefix}.rotation_vector"), w)?;
             Ok(Rotation3::new(Vector3::from(*w)).into_inner())
         }
         Some(RawAttitude::Quaternion(q)) => {
-            let field = "initial.attitude.quaternion";
+            let field = &format!("{prefix}.quaternion");
             finite_all(field, q)?;
             let quat = Quaternion::new(q[0], q[1], q[2], q[3]);
             let norm = quat.norm();
@@ -1871,7 +1943,7 @@ fn attitude3(raw: &Option<RawAttitude>) -> Result<Matrix3<f64>, FieldError> {
                 .into_inner())
         }
         Some(RawAttitude::Angle(_)) => Err((
-            "initial.attitude.angle".into(),
+            format!("{prefix}.angle"),
             "a planar angle is only an attitude of planar-body-se2".into(),
         )),
     }

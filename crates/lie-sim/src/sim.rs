@@ -11,26 +11,30 @@ use crate::scene::{
     inapplicable, Forces, GeodesicSoN, Method, MethodSpec, SolverChoice, SolverOptions, System,
     TauKind,
 };
+use crate::vehicles::{BODY_COUNTS, WHEEL_COUNTS};
 use faer::{Col, Mat};
 use integrators::dense_output::{DenseState, HermiteStep};
 use integrators::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
-use integrators::forces::{BodyTorque, Forced, LinearDamping};
+use integrators::forces::{
+    BodyInputMap, BodyTorque, ControlInput, Forced, LinearDamping, QuadraticDrag,
+};
 use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
 use integrators::processing::Processed;
 use integrators::splitting::{KineticFlow, KineticKick, SplitSystem, Splitting, SplittingScheme};
 use integrators::systems::{
-    GeneralizedRigidBody, HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, RigidBody,
-    RigidBodySe3 as RigidBodySe3System,
+    CoupledBodies as CoupledBodiesSystem, GeneralizedRigidBody, Gyrostat as GyrostatSystem,
+    HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, Quadrotor as QuadrotorSystem,
+    RigidBody, RigidBodySe3 as RigidBodySe3System, Spring, UnderwaterVehicle as VehicleSystem,
 };
 use integrators::{
     Composition, EulerArnold, EulerPoincare, Integrator, IntegratorError, LiePoisson,
     QuaternionRk4, Rkmk4, SolverConfig, SolverKind, StateSnapshot, SymmetricMethod,
 };
 use lie_groups::{
-    Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Operator, Se2, Se3, So2, So3,
-    SoN, Vector,
+    Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Operator, Power, PowerAlgebra,
+    Product, ProductAlgebra, Rn, Se2, Se3, So2, So3, SoN, Vector,
 };
-use nalgebra::{Matrix3, Vector3, Vector6};
+use nalgebra::{Matrix3, SVector, Vector3, Vector6};
 
 /// One running simulation: the integrator, its system and its state.
 ///
@@ -284,12 +288,67 @@ pub fn dispatch<J: Job>(
             }
         }
         System::GeodesicSoN(p) => so_n(&b, p, reconstruct, job).map_err(|e| match e {
-            SoNError::Size => unavailable(&format!(
+            SizedError::Size => unavailable(&format!(
                 "SO({}) is not compiled into lie-sim (sizes: {SO_N_SIZES:?})",
                 p.n
             )),
-            SoNError::Integrator(e) => built(e),
-            SoNError::Lie(e) => lie(e),
+            SizedError::Integrator(e) => built(e),
+            SizedError::Lie(e) => lie(e),
+        }),
+        System::Gyrostat(p) => gyrostat(&b, p, reconstruct, job).map_err(|e| match e {
+            SizedError::Size => unavailable(&format!(
+                "{} wheels are not compiled into lie-sim (counts: {WHEEL_COUNTS:?})",
+                p.axes.len()
+            )),
+            SizedError::Integrator(e) => built(e),
+            SizedError::Lie(e) => lie(e),
+        }),
+        System::UnderwaterVehicle(p) => {
+            let vehicle = VehicleSystem::new(p.mass_matrix())
+                .and_then(|v| {
+                    v.with_restoring(
+                        p.weight(),
+                        p.center_of_gravity,
+                        p.buoyancy,
+                        p.center_of_buoyancy,
+                    )
+                })
+                .map_err(built)?;
+            let g0 = so3(&p.attitude)?.map(|r| Se3::from_parts(r, p.position));
+            match &p.forces {
+                None => job.run(vehicle, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g)),
+                Some(f) => {
+                    let forced = Forced::new(vehicle, se3_force(f).map_err(built)?);
+                    job.run(forced, p.momentum, g0, |s, mu, g| b.make_split(s, mu, g))
+                }
+            }
+            .map_err(built)
+        }
+        System::Quadrotor(p) => {
+            let quad = QuadrotorSystem::new(p.mass, p.inertia, p.gravity).map_err(built)?;
+            let g0 = so3(&p.attitude)?.map(|r| Se3::from_parts(r, p.position));
+            match &p.forces {
+                None => job.run(quad, p.momentum, g0, |s, mu, g| {
+                    let flow = FreeBodySe3Flow::new(s.body());
+                    b.make_kinetic_or_split(s, flow, mu, g)
+                }),
+                Some(f) => {
+                    let forced = Forced::new(quad, se3_force(f).map_err(built)?);
+                    job.run(forced, p.momentum, g0, |s, mu, g| {
+                        let flow = FreeBodySe3Flow::new(s.system().body());
+                        b.make_kinetic_or_split(s, flow, mu, g)
+                    })
+                }
+            }
+            .map_err(built)
+        }
+        System::CoupledBodies(p) => coupled(&b, p, reconstruct, job).map_err(|e| match e {
+            SizedError::Size => unavailable(&format!(
+                "{} bodies are not compiled into lie-sim (counts: {BODY_COUNTS:?})",
+                p.bodies.len()
+            )),
+            SizedError::Integrator(e) => built(e),
+            SizedError::Lie(e) => lie(e),
         }),
     }
 }
@@ -576,8 +635,155 @@ type SceneForce = (Option<BodyTorque<So3>>, Option<LinearDamping<So3>>);
 fn scene_force(f: &Forces) -> Result<SceneForce, IntegratorError> {
     Ok((
         f.torque.clone().map(BodyTorque::new).transpose()?,
-        f.damping.map(LinearDamping::new).transpose()?,
+        f.damping3().map(LinearDamping::new).transpose()?,
     ))
+}
+
+/// The `[forces]` of a scene on SE(3): a body torque (input map (I₃, 0)), a body force
+/// ((0, I₃)) or the quadrotor's thrust ((0, e₃)), linear damping `−D ξ` and quadratic drag, each
+/// optional.
+type Se3Force = (
+    Option<ControlInput<Se3>>,
+    (
+        Option<ControlInput<Se3>>,
+        (Option<LinearDamping<Se3>>, Option<QuadraticDrag<Se3>>),
+    ),
+);
+
+fn se3_force(f: &Forces) -> Result<Se3Force, IntegratorError> {
+    let input = |first: usize, count: usize, s: &integrators::forces::Schedule| {
+        ControlInput::new(BodyInputMap::<Se3>::components(first, count)?, s.clone())
+    };
+    let torque = f.torque.as_ref().map(|s| input(0, 3, s)).transpose()?;
+    let push = match (&f.force, &f.thrust) {
+        (Some(s), _) => Some(input(3, 3, s)?),
+        (None, Some(s)) => Some(QuadrotorSystem::thrust(s.clone())?),
+        (None, None) => None,
+    };
+    Ok((
+        torque,
+        (
+            push,
+            (
+                f.damping6().map(LinearDamping::new).transpose()?,
+                f.quadratic_drag6().map(QuadraticDrag::new).transpose()?,
+            ),
+        ),
+    ))
+}
+
+/// A gyrostat scene on SO(3) × ℝᴷ for the K of [`WHEEL_COUNTS`]: its system, (Π, p), (R, φ), and
+/// its wheel and platform torques.
+fn gyrostat<J: Job>(
+    b: &Builder,
+    p: &crate::scene::Gyrostat,
+    reconstruct: bool,
+    job: J,
+) -> Result<J::Out, SizedError> {
+    fn go<const K: usize, J: Job>(
+        b: &Builder,
+        p: &crate::scene::Gyrostat,
+        reconstruct: bool,
+        job: J,
+    ) -> Result<J::Out, SizedError> {
+        let gyro = GyrostatSystem::<K>::new(
+            p.inertia,
+            core::array::from_fn(|i| p.axes[i]),
+            core::array::from_fn(|i| p.wheel_inertia[i]),
+        )
+        .map_err(SizedError::Integrator)?;
+        let mu0 = ProductAlgebra::<So3, Rn<K>>::new(
+            Vector3::from_column_slice(&p.momentum[..3]),
+            SVector::<f64, K>::from_column_slice(&p.momentum[3..]),
+        );
+        let g0 = if reconstruct {
+            Some(Product::new(
+                So3::from_matrix(&p.attitude).map_err(SizedError::Lie)?,
+                Rn::new(SVector::<f64, K>::from_column_slice(&p.wheel_angles)),
+            ))
+        } else {
+            None
+        };
+        match &p.forces {
+            None => job.run(gyro, mu0, g0, |s, mu, g| b.make_split(s, mu, g)),
+            Some(f) => {
+                let force = (
+                    f.torque
+                        .clone()
+                        .map(GyrostatSystem::<K>::body_torque)
+                        .transpose()
+                        .map_err(SizedError::Integrator)?,
+                    f.wheel_torque
+                        .clone()
+                        .map(GyrostatSystem::<K>::wheel_torques)
+                        .transpose()
+                        .map_err(SizedError::Integrator)?,
+                );
+                job.run(Forced::new(gyro, force), mu0, g0, |s, mu, g| {
+                    b.make_split(s, mu, g)
+                })
+            }
+        }
+        .map_err(SizedError::Integrator)
+    }
+    match p.axes.len() {
+        1 => go::<1, J>(b, p, reconstruct, job),
+        2 => go::<2, J>(b, p, reconstruct, job),
+        3 => go::<3, J>(b, p, reconstruct, job),
+        4 => go::<4, J>(b, p, reconstruct, job),
+        _ => Err(SizedError::Size),
+    }
+}
+
+/// A coupled-bodies scene on SE(3)ᴺ for the N of [`BODY_COUNTS`]: free bodies joined by springs.
+fn coupled<J: Job>(
+    b: &Builder,
+    p: &crate::scene::CoupledBodies,
+    reconstruct: bool,
+    job: J,
+) -> Result<J::Out, SizedError> {
+    fn go<const N: usize, J: Job>(
+        b: &Builder,
+        p: &crate::scene::CoupledBodies,
+        reconstruct: bool,
+        job: J,
+    ) -> Result<J::Out, SizedError> {
+        let bodies: Vec<RigidBodySe3System> = p
+            .bodies
+            .iter()
+            .map(|(m, i)| RigidBodySe3System::free(*m, *i))
+            .collect::<Result<_, _>>()
+            .map_err(SizedError::Integrator)?;
+        let bodies: [RigidBodySe3System; N] = bodies.try_into().map_err(|_| SizedError::Size)?;
+        let springs = p
+            .springs
+            .iter()
+            .map(|s| Spring::new(s.between, s.attachments, s.stiffness, s.rest_length))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(SizedError::Integrator)?;
+        let system = CoupledBodiesSystem::new(bodies, springs).map_err(SizedError::Integrator)?;
+        let mu0 = PowerAlgebra::<Se3, N>::from_parts_fn(|k| p.initial[k].momentum);
+        let g0 = if reconstruct {
+            let parts: Vec<Se3> = p
+                .initial
+                .iter()
+                .map(|st| So3::from_matrix(&st.attitude).map(|r| Se3::from_parts(r, st.position)))
+                .collect::<Result<_, _>>()
+                .map_err(SizedError::Lie)?;
+            let parts: [Se3; N] = parts.try_into().map_err(|_| SizedError::Size)?;
+            Some(Power::new(parts))
+        } else {
+            None
+        };
+        job.run(system, mu0, g0, |s, mu, g| b.make_split(s, mu, g))
+            .map_err(SizedError::Integrator)
+    }
+    match p.bodies.len() {
+        2 => go::<2, J>(b, p, reconstruct, job),
+        3 => go::<3, J>(b, p, reconstruct, job),
+        4 => go::<4, J>(b, p, reconstruct, job),
+        _ => Err(SizedError::Size),
+    }
 }
 
 /// The Euler–Arnold system of a purely kinetic system S: l(ξ) = ½⟨𝕀ξ, ξ⟩ with
@@ -651,7 +857,9 @@ impl<G: LieGroup, S: integrators::System<G>> integrators::System<G> for EulerArn
     }
 }
 
-enum SoNError {
+/// A failure of a dispatch over the sizes compiled into lie-sim (SO(n), the gyrostat's wheels,
+/// the coupled bodies).
+enum SizedError {
     Size,
     Integrator(IntegratorError),
     Lie(LieError),
@@ -662,23 +870,23 @@ fn so_n<J: Job>(
     p: &GeodesicSoN,
     reconstruct: bool,
     job: J,
-) -> Result<J::Out, SoNError> {
+) -> Result<J::Out, SizedError> {
     fn go<const N: usize, J: Job>(
         b: &Builder,
         p: &GeodesicSoN,
         reconstruct: bool,
         job: J,
-    ) -> Result<J::Out, SoNError> {
-        let body = GeneralizedRigidBody::<N>::new(&p.inertia).map_err(SoNError::Integrator)?;
+    ) -> Result<J::Out, SizedError> {
+        let body = GeneralizedRigidBody::<N>::new(&p.inertia).map_err(SizedError::Integrator)?;
         let mu0 = Col::from_fn(p.momentum.len(), |i| p.momentum[i]);
         let g0 = if reconstruct {
             let m = Mat::from_fn(N, N, |r, c| p.attitude[r * N + c]);
-            Some(SoN::<N>::from_matrix(&m).map_err(SoNError::Lie)?)
+            Some(SoN::<N>::from_matrix(&m).map_err(SizedError::Lie)?)
         } else {
             None
         };
         job.run::<SoN<N>, _, _>(body, mu0, g0, |s, mu, g| b.make(s, mu, g))
-            .map_err(SoNError::Integrator)
+            .map_err(SizedError::Integrator)
     }
     match p.n {
         3 => go::<3, J>(b, p, reconstruct, job),
@@ -689,7 +897,7 @@ fn so_n<J: Job>(
         10 => go::<10, J>(b, p, reconstruct, job),
         20 => go::<20, J>(b, p, reconstruct, job),
         50 => go::<50, J>(b, p, reconstruct, job),
-        _ => Err(SoNError::Size),
+        _ => Err(SizedError::Size),
     }
 }
 

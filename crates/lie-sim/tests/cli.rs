@@ -7,33 +7,10 @@
 mod common;
 
 use common::*;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Output;
 
-struct Csv {
-    header: Vec<String>,
-    rows: Vec<Vec<f64>>,
-}
-
 impl Csv {
-    fn read(path: &Path) -> Csv {
-        let text = std::fs::read_to_string(path).unwrap();
-        let mut lines = text.lines();
-        let header = lines
-            .next()
-            .unwrap()
-            .split(',')
-            .map(String::from)
-            .collect::<Vec<_>>();
-        let rows = lines
-            .map(|l| l.split(',').map(|x| x.parse::<f64>().unwrap()).collect())
-            .collect();
-        Csv { header, rows }
-    }
-    fn col(&self, name: &str) -> Vec<f64> {
-        let j = self.header.iter().position(|h| h == name).unwrap();
-        self.rows.iter().map(|r| r[j]).collect()
-    }
     /// max_k |x_k − x₀| / |x₀| over a column.
     fn max_relative_drift(&self, name: &str) -> f64 {
         let c = self.col(name);
@@ -104,22 +81,7 @@ fn check_scene(
     casimir: bool,
 ) {
     let energy_tol = ENERGY_TOL;
-    let dir = temp_dir(file);
-    let out = dir.join("traj.csv");
-    let scene = scenes_dir().join(file);
-    let o = lie_sim(
-        &[
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--duration",
-            "1",
-        ],
-        &dir,
-    );
-    assert!(o.status.success(), "{file}: {}", stderr(&o));
-    let csv = Csv::read(&out);
+    let (csv, summary) = run_example(file, "1");
     assert_eq!(
         csv.header,
         expected_header(n_mu, Some(side), casimir),
@@ -150,7 +112,6 @@ fn check_scene(
         "{file}: ‖RᵀR − I‖ = {}",
         csv.max_orthogonality_defect(side, rot)
     );
-    let summary = stdout(&o);
     for key in [
         "system",
         "method",
@@ -166,7 +127,6 @@ fn check_scene(
             "{file}: summary lacks {key}: {summary}"
         );
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -376,37 +336,6 @@ theta = 0.5
 step = 0.1
 duration = 0.3
 "#;
-
-/// Writes `scene` to a fresh directory, runs `lie-sim run` on it with an output path there, and
-/// checks: exit status 1, one line on stderr containing every one of `needles`, and no file left
-/// besides the scene.
-fn assert_rejected(name: &str, scene: &str, needles: &[&str]) {
-    let dir = temp_dir(name);
-    std::fs::write(dir.join("s.toml"), scene).unwrap();
-    let o = lie_sim(&["run", "s.toml", "--out", "out/t.csv"], &dir);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(1), "{name}: {err}");
-    assert_eq!(err.lines().count(), 1, "{name}: not one line: {err}");
-    for n in needles {
-        assert!(err.contains(n), "{name}: `{n}` missing from: {err}");
-    }
-    let left: Vec<_> = walk(&dir);
-    assert_eq!(left, vec![dir.join("s.toml")], "{name}: files left behind");
-    std::fs::remove_dir_all(&dir).unwrap();
-}
-
-fn walk(dir: &Path) -> Vec<PathBuf> {
-    let mut v = Vec::new();
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
-        if p.is_dir() {
-            v.extend(walk(&p));
-        } else {
-            v.push(p);
-        }
-    }
-    v
-}
 
 #[test]
 fn good_scene_used_by_the_rejection_tests_runs() {

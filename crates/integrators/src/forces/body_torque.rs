@@ -39,17 +39,8 @@ impl<G: LieGroup> BodyTorque<G> {
 impl<G: LieGroup> ExternalForce<G> for BodyTorque<G> {
     #[inline]
     fn force(&self, t: f64, _g: Option<&G>, _xi: &G::Algebra) -> G::Algebra {
-        let n = G::dim();
-        // Algebras of dimension ≤ 16 evaluate through a stack buffer (no allocation).
-        let mut buf = [0.0; 16];
-        if n <= buf.len() {
-            self.schedule.eval_into(t, &mut buf[..n]);
-            G::Algebra::from_fn(n, |i| buf[i])
-        } else {
-            let mut v = vec![0.0; n];
-            self.schedule.eval_into(t, &mut v);
-            G::Algebra::from_fn(n, |i| v[i])
-        }
+        self.schedule
+            .eval_with(t, |u| G::Algebra::from_fn(G::dim(), |i| u[i]))
     }
     fn reads_velocity(&self) -> bool {
         false

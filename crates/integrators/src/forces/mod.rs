@@ -4,7 +4,10 @@
 //! A force is an [`ExternalForce`]: a left-trivialized (body-frame) covector depending on time t,
 //! configuration g and body velocity ξ. [`Forced`] attaches one to any system; forces add up as
 //! pairs `(a, b)`. Built in: [`BodyTorque`] (a constant or piecewise-linear [`Schedule`] of body
-//! torque/force) and [`LinearDamping`] (`F = −D ξ`).
+//! torque/force), [`ControlInput`] (a control u(t) through an input map, `F = B(g) u(t)`: wheel
+//! motors, thrust, body torques; [`BodyInputMap`] for actuators fixed to the body),
+//! [`LinearDamping`] (`F = −D ξ`, viscous damping or linear drag) and [`QuadraticDrag`]
+//! (`Fᵢ = −dᵢ |ξᵢ| ξᵢ`).
 //!
 //! ## How each integrator applies the force
 //! The forced equations are `μ̇ = ad*_ξ μ + F(g) + F_ext(t, g, ξ)`, `ġ = gξ`, ξ = ∂h/∂μ.
@@ -49,13 +52,17 @@
 //! ```
 
 mod body_torque;
+mod control_input;
 mod damping;
 mod external_force;
 mod forced;
+mod quadratic_drag;
 mod schedule;
 
 pub use body_torque::BodyTorque;
+pub use control_input::{BodyInputMap, ControlInput, InputMap};
 pub use damping::LinearDamping;
 pub use external_force::ExternalForce;
 pub use forced::Forced;
+pub use quadratic_drag::QuadraticDrag;
 pub use schedule::Schedule;

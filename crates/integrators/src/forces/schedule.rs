@@ -58,10 +58,40 @@ impl Schedule {
     pub fn dim(&self) -> usize {
         self.values[0].len()
     }
+    /// The knot times (strictly increasing; one for a constant).
+    pub fn times(&self) -> &[f64] {
+        &self.times
+    }
     /// The number of knots (1 for a constant).
     pub fn knots(&self) -> usize {
         self.times.len()
     }
+    /// The largest Euclidean norm |u| of the values, which bounds |u(t)| for every t (the
+    /// interpolation is convex).
+    pub fn max_abs(&self) -> f64 {
+        self.values
+            .iter()
+            .map(|v| v.iter().map(|x| x * x).sum::<f64>().sqrt())
+            .fold(0.0, f64::max)
+    }
+    /// `f(u(t))`, with u(t) evaluated into a stack buffer when [`Self::dim`] ≤
+    /// [`Self::STACK_DIM`] (no allocation; a heap buffer beyond).
+    #[inline]
+    pub fn eval_with<R>(&self, t: f64, f: impl FnOnce(&[f64]) -> R) -> R {
+        let n = self.dim();
+        let mut buf = [0.0; Self::STACK_DIM];
+        if n <= buf.len() {
+            self.eval_into(t, &mut buf[..n]);
+            f(&buf[..n])
+        } else {
+            let mut v = vec![0.0; n];
+            self.eval_into(t, &mut v);
+            f(&v)
+        }
+    }
+    /// Schedules of at most this many components evaluate without allocating
+    /// ([`Self::eval_with`]).
+    pub const STACK_DIM: usize = 16;
     /// `u(t)` into `out` (length [`Self::dim`]); no allocation.
     pub fn eval_into(&self, t: f64, out: &mut [f64]) {
         let n = self.times.len();
@@ -119,5 +149,11 @@ mod tests {
         .contains("values[1]"));
         assert!(msg(Schedule::new(vec![0.0], vec![vec![f64::INFINITY]])).contains("values[0][0]"));
         assert!(Schedule::new(vec![], vec![]).is_err());
+    }
+
+    #[test]
+    fn max_abs_is_the_largest_value_norm() {
+        let s = Schedule::new(vec![0.0, 1.0], vec![vec![3.0, 4.0], vec![0.0, -1.0]]).unwrap();
+        assert_eq!(s.max_abs(), 5.0);
     }
 }

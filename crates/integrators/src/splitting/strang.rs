@@ -55,7 +55,10 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
     pub fn new(system: S, mu0: G::Algebra, g0: Option<G>) -> Result<Self, IntegratorError> {
         if system.pieces() == 0 {
             return Err(IntegratorError::InvalidParameter {
-                reason: "the system declares no kinetic piece to split".into(),
+                reason: "the system declares no kinetic piece to split: its kinetic energy has \
+                         no splitting into pieces with explicit flows (e.g. an underwater \
+                         vehicle whose mass matrix couples rotation and translation)"
+                    .into(),
             });
         }
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;

@@ -143,16 +143,59 @@ pub fn rk4_dvec(
     t: f64,
     n: usize,
 ) -> nalgebra::DVector<f64> {
+    rk4_dvec_t(|_, y| f(y), y0, t, n)
+}
+
+/// A rigid body's state on SE(3) as 18 numbers for the RK4 references: R (column-major), x,
+/// μ = (Π, P).
+pub fn pack_se3(g: &lie_groups::Se3, mu: &nalgebra::Vector6<f64>) -> Vec<f64> {
+    let mut y = g.rotation().as_matrix().as_slice().to_vec();
+    y.extend_from_slice(g.translation().as_slice());
+    y.extend_from_slice(mu.as_slice());
+    y
+}
+
+/// The inverse of [`pack_se3`] on the first 18 numbers of `y`: (R, x, μ).
+pub fn unpack_se3(y: &[f64]) -> (Matrix3<f64>, Vector3<f64>, nalgebra::Vector6<f64>) {
+    (
+        Matrix3::from_column_slice(&y[0..9]),
+        Vector3::from_column_slice(&y[9..12]),
+        nalgebra::Vector6::from_column_slice(&y[12..18]),
+    )
+}
+
+/// Classical RK4 for a time-dependent field `ẏ = f(t, y)` on `y ∈ ℝᵈ` (a `DVector`), `n` steps
+/// over [0, t] (the forced systems' references: schedules of time).
+pub fn rk4_dvec_t(
+    f: impl Fn(f64, &nalgebra::DVector<f64>) -> nalgebra::DVector<f64>,
+    y0: &nalgebra::DVector<f64>,
+    t: f64,
+    n: usize,
+) -> nalgebra::DVector<f64> {
     let h = t / n as f64;
     let mut y = y0.clone();
-    for _ in 0..n {
-        let k1 = f(&y);
-        let k2 = f(&(&y + &k1 * (h / 2.0)));
-        let k3 = f(&(&y + &k2 * (h / 2.0)));
-        let k4 = f(&(&y + &k3 * h));
+    for k in 0..n {
+        let s = k as f64 * h;
+        let k1 = f(s, &y);
+        let k2 = f(s + h / 2.0, &(&y + &k1 * (h / 2.0)));
+        let k3 = f(s + h / 2.0, &(&y + &k2 * (h / 2.0)));
+        let k4 = f(s + h, &(&y + &k3 * h));
         y += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0);
     }
     y
+}
+
+/// The Richardson extrapolation `(16 y_{n} − y_{n/2})/15` of two RK4 runs with n and n/2 steps:
+/// an order-6-accurate reference (RK4's leading error term cancels).
+pub fn rk4_richardson(
+    f: impl Fn(f64, &nalgebra::DVector<f64>) -> nalgebra::DVector<f64>,
+    y0: &nalgebra::DVector<f64>,
+    t: f64,
+    n: usize,
+) -> nalgebra::DVector<f64> {
+    let fine = rk4_dvec_t(&f, y0, t, n);
+    let coarse = rk4_dvec_t(&f, y0, t, n / 2);
+    (fine * 16.0 - coarse) / 15.0
 }
 
 /// Central finite difference of `s ↦ V(g exp(s eᵢ))` at s = 0, for every basis direction eᵢ:
