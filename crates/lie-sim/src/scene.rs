@@ -131,12 +131,12 @@
 //! [`Scene`]. Each stage reports one error naming the field.
 
 use crate::error::SimError;
-use integrators::processing::ProcessingScheme;
 use crate::forces::{check_forces, ForceSlots, FORCED_KINDS};
 pub use crate::forces::{Forces, RawForces};
 pub use crate::vehicles::{
     CoupledBodies, Gyrostat, Quadrotor, RawBody, RawBodyState, RawSpring, UnderwaterVehicle,
 };
+use integrators::processing::ProcessingScheme;
 use integrators::splitting::SplittingScheme;
 use integrators::CompositionScheme;
 use lie_groups::{LieGroup, So3};
