@@ -31,6 +31,10 @@
 //!   6 and 8 from fewer basic steps than a composition of that order, P applied only when the
 //!   state is read ([`processing::Processed`]).
 //! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
+//! - [`GraggBulirschStoer`] ([`gragg_bulirsch_stoer`]): a reference method — Gragg–Bulirsch–Stoer
+//!   extrapolation of order 2k in exponential coordinates, explicit, keeping only g on G — that
+//!   shares no discretization with the methods above, so that it can measure them (`lie-sim
+//!   trade` refines it until two runs agree to a tolerance).
 //! - [`forces`]: external forces and controls `F_ext(t, g, ξ)` ([`forces::Forced`], scheduled body
 //!   torques, controls u(t) through an input map `F = B(g)u(t)` ([`forces::ControlInput`]),
 //!   damping and quadratic drag), applied by Lie–Poisson, Euler–Poincaré, RK4 and RKMK4 in the discrete
@@ -99,6 +103,7 @@ pub mod euler_poincare;
 pub mod events;
 pub mod exact;
 pub mod forces;
+pub mod gragg_bulirsch_stoer;
 mod integrator;
 pub mod lie_poisson;
 pub mod modified;
@@ -114,6 +119,7 @@ pub use compose::{Composition, CompositionScheme, StateSnapshot, SymmetricMethod
 pub use error::IntegratorError;
 pub use euler_arnold::{EulerArnold, EulerArnoldEulerPoincare, EulerArnoldLiePoisson};
 pub use euler_poincare::{EulerPoincare, TangentLiftIntegrator};
+pub use gragg_bulirsch_stoer::GraggBulirschStoer;
 pub use integrator::{integrate, Integrator, MethodInfo};
 pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};

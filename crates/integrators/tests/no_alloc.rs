@@ -1,8 +1,9 @@
 //! A step of every integrator allocates nothing on the heap for the fixed-size groups (SO(3),
 //! SE(3), SE(2)): counted by a global allocator, per thread, over 100 steps after a first one.
 //! Every solver kind, both τ maps, θ ∈ {0, ½, 1}, with and without reconstruction, with and
-//! without a potential, and the RK4 / RKMK4 baselines; the vehicles on SE(3) (underwater vehicle
-//! with thrust and drag, quadrotor with thrust and torques) too.
+//! without a potential, the RK4 / RKMK4 baselines and the Gragg–Bulirsch–Stoer reference method;
+//! the vehicles on SE(3) (underwater vehicle with thrust and drag, quadrotor with thrust and
+//! torques) too.
 
 use integrators::baselines::{QuaternionRk4, Rkmk4};
 use integrators::forces::{BodyTorque, Forced, LinearDamping, QuadraticDrag, Schedule};
@@ -10,7 +11,9 @@ use integrators::splitting::Splitting;
 use integrators::systems::{
     HeavyTop, PlanarBody, Quadrotor, RigidBody, RigidBodySe3, UnderwaterVehicle,
 };
-use integrators::{EulerPoincare, Integrator, LiePoisson, SolverConfig, SolverKind, System};
+use integrators::{
+    EulerPoincare, GraggBulirschStoer, Integrator, LiePoisson, SolverConfig, SolverKind, System,
+};
 use lie_groups::testing::{allocations, CountingAllocator};
 use lie_groups::{Cayley, CayleyGroup, ExpMap, LieGroup, Se2, Se3, So2, So3, Tau};
 use nalgebra::{Matrix3, Vector2, Vector3, Vector6};
@@ -91,7 +94,15 @@ fn so3_steps_allocate_nothing() {
     for g0 in [Some(r0), None] {
         assert_steps_allocate_nothing(QuaternionRk4::new(body.clone(), pi0, g0).unwrap(), 0.01);
         assert_steps_allocate_nothing(Rkmk4::new(body.clone(), pi0, g0).unwrap(), 0.01);
+        assert_steps_allocate_nothing(
+            GraggBulirschStoer::new(body.clone(), pi0, g0).unwrap(),
+            0.01,
+        );
     }
+    assert_steps_allocate_nothing(
+        GraggBulirschStoer::new(top.clone(), pi0, Some(r0)).unwrap(),
+        0.01,
+    );
     assert_steps_allocate_nothing(
         QuaternionRk4::new(top.clone(), pi0, Some(r0)).unwrap(),
         0.01,
@@ -115,6 +126,10 @@ fn so3_steps_allocate_nothing() {
         QuaternionRk4::new(forced.clone(), pi0, Some(r0)).unwrap(),
         0.01,
     );
+    assert_steps_allocate_nothing(
+        GraggBulirschStoer::new(forced.clone(), pi0, Some(r0)).unwrap(),
+        0.01,
+    );
     assert_steps_allocate_nothing(Rkmk4::new(forced, pi0, Some(r0)).unwrap(), 0.01);
 }
 
@@ -129,6 +144,10 @@ fn se3_steps_allocate_nothing() {
     every_method::<Se3, _>(&satellite, mu0, Some(g0), 0.01);
     let free = RigidBodySe3::free(2.0, inertia).unwrap();
     every_method::<Se3, _>(&free, mu0, None, 0.01);
+    assert_steps_allocate_nothing(
+        GraggBulirschStoer::new(satellite.clone(), mu0, Some(g0)).unwrap(),
+        0.01,
+    );
     assert_steps_allocate_nothing(Rkmk4::new(satellite, mu0, Some(g0)).unwrap(), 0.01);
     // The vehicles: a full mass matrix with restoring force, thrust (a control input through a
     // body-fixed input map), linear and quadratic drag; a quadrotor's thrust and torques.
@@ -177,6 +196,10 @@ fn se2_steps_allocate_nothing() {
     let g0 = Se2::new(So2::from_angle(0.4), Vector2::new(1.0, 0.5));
     let mu0 = Vector3::new(0.3, 0.5, 1.2);
     every_method::<Se2, _>(&body, mu0, Some(g0), 0.01);
+    assert_steps_allocate_nothing(
+        GraggBulirschStoer::new(body.clone(), mu0, Some(g0)).unwrap(),
+        0.01,
+    );
     assert_steps_allocate_nothing(Rkmk4::new(body, mu0, Some(g0)).unwrap(), 0.01);
 }
 

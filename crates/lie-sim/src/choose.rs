@@ -7,8 +7,12 @@
 //! not in the middle of one slow method's fine steps. A method that met the target is not run at
 //! finer steps (they only cost more); one that failed is not run again. The measure is
 //!
-//! - `error`: the error at T against the reference of [`crate::trade::reference`] (the exact flow
-//!   on free-body scenes), or
+//! - `error`: the error at T against the reference of [`crate::reference`] (the exact flow on
+//!   free-body scenes, elsewhere Gragg–Bulirsch–Stoer refined to `--reference-tolerance`, or the
+//!   user's `--reference`); a run meets the target when its error bound is within it — its error
+//!   plus the reference's estimated error (the floor), or twice the floor for an error below the
+//!   floor, which the reference cannot resolve ([`crate::reference::meets`]) — and a target below
+//!   twice the floor is refused, since no run could be shown to meet it; or
 //! - `energy`: the maximum relative energy error over the run (no reference needed),
 //!
 //! and the cost the stepping time of the whole run. The choice is the cheapest run meeting the
@@ -17,9 +21,10 @@
 //! value reached.
 
 use crate::error::SimError;
+use crate::reference::{meets, reference, Options as ReferenceOptions};
 use crate::scene::{Method, MethodSpec, Scene};
 use crate::sim::build;
-use crate::trade::{candidates, reference, timed_run};
+use crate::trade::{candidates, timed_run};
 use std::time::{Duration, Instant};
 
 /// What is measured against the target.
@@ -59,16 +64,22 @@ pub struct Choice {
     pub truncated: bool,
     /// How the reference was made (error metric only).
     pub reference: Option<String>,
+    /// The reference's estimated error (error metric only): values below it are unresolved.
+    pub floor: Option<f64>,
+    /// The reference's one-line shortfall, when its tolerance was not met.
+    pub shortfall: Option<String>,
 }
 
-/// Runs the bounded search (see the module page). Errors: a target or budget that is not finite
-/// and positive, and whatever stops the reference.
+/// Runs the bounded search (see the module page). Errors: a target that is not finite and
+/// positive, a target (error metric) below the reference's estimated error, and whatever stops
+/// the reference.
 pub fn choose(
     scene: &Scene,
     target: f64,
     metric: Metric,
     levels: usize,
     budget: Duration,
+    reference_options: &ReferenceOptions,
 ) -> Result<Choice, SimError> {
     if !(target.is_finite() && target > 0.0) {
         return Err(SimError::Invalid {
@@ -77,14 +88,28 @@ pub fn choose(
             message: format!("must be finite and positive, got {target}"),
         });
     }
-    let deadline = Instant::now() + budget;
     let ladder: Vec<f64> = (0..levels)
         .map(|k| scene.step / f64::powi(2.0, k as i32))
         .collect();
-    let h_min = ladder.last().copied().unwrap_or(scene.step);
     let reference = match metric {
-        Metric::Error => Some(reference(scene, h_min)?),
+        Metric::Error => Some(reference(scene, reference_options)?),
         Metric::Energy => None,
+    };
+    let floor = reference.as_ref().map(|r| r.estimated_error);
+    if let Some(floor) = floor.filter(|&f| f.is_nan() || 2.0 * f > target) {
+        return Err(SimError::Choose {
+            message: format!(
+                "the target {target:e} is below twice the reference's estimated error \
+                 {floor:.1e}: no resolved error plus that estimate is within it (loosen --target, \
+                 or tighten the reference with --reference-tolerance / --reference-budget)"
+            ),
+        });
+    }
+    // The search's budget starts after the reference (which has its own).
+    let deadline = Instant::now() + budget;
+    let met = |value: f64| match floor {
+        Some(f) => meets(value, f, target),
+        None => value <= target,
     };
     let methods = candidates();
     let mut done = vec![false; methods.len()];
@@ -120,7 +145,8 @@ pub fn choose(
                 done[k] = true;
                 continue;
             }
-            done[k] = value <= target;
+            // Met, or unresolved (finer steps of this method stay below the floor).
+            done[k] = met(value) || floor.is_some_and(|f| value < f);
             rows.push(Candidate {
                 method: m.clone(),
                 h,
@@ -134,13 +160,13 @@ pub fn choose(
         // every step, so the runs that met it are checked step by step (one run each, cheapest
         // first) and dropped if a sample between the trade's missed a peak.
         rows.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
-        for r in rows.iter_mut().filter(|r| r.value <= target) {
+        for r in rows.iter_mut().filter(|r| met(r.value)) {
             r.value = energy_error_every_step(scene, &r.method, r.h)?;
         }
     }
     let cheapest = |exclude: Option<&MethodSpec>| {
         rows.iter()
-            .filter(|r| r.value <= target && Some(&r.method) != exclude)
+            .filter(|r| met(r.value) && Some(&r.method) != exclude)
             .min_by(|a, b| a.seconds.total_cmp(&b.seconds))
             .cloned()
     };
@@ -156,12 +182,14 @@ pub fn choose(
         most_accurate,
         runs: rows.len(),
         truncated,
+        shortfall: reference.as_ref().and_then(|r| r.shortfall.clone()),
         reference: reference.map(|r| {
             format!(
                 "{} (estimated error {:.1e})",
                 r.description, r.estimated_error
             )
         }),
+        floor,
     })
 }
 

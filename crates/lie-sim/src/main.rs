@@ -44,6 +44,7 @@ mod invariants;
 mod ladder;
 mod output;
 mod plot;
+mod reference;
 mod run;
 mod scene;
 mod sim;
@@ -114,6 +115,15 @@ enum Command {
     /// 1e-13 reference floor over T, at most 10 levels (--levels fixes the count); finest levels
     /// are dropped when the work limit would be exceeded. Each run reports the error at T and the
     /// maximum relative energy, Casimir and spatial momentum-map errors over the run.
+    ///
+    /// The reference, made independently of every method in the table: the exact flow on the free
+    /// rigid body without forces; elsewhere Gragg–Bulirsch–Stoer extrapolation (order 12) at
+    /// h = 1/ω, 1/(2ω), … until two successive runs agree to --reference-tolerance, within
+    /// --reference-budget (if not, one line says so and the trade goes on with the agreement
+    /// reached); or your own with --reference. Its estimated error (the spread of its runs at its
+    /// step and at twice it, plus 2ε(1 + ωT) for the rounding of the scene's data) is printed and
+    /// is the floor: errors below it are shown as `unresolved`, not as numbers, in the table, the
+    /// CSV and the plot, and count as twice the floor when a run is picked for a target.
     #[command(mut_arg("step", |a| a.hide(true)))]
     Trade {
         /// The scene file (TOML); the embedded default scene when left out.
@@ -144,6 +154,12 @@ enum Command {
         /// Repeat each run this many times and keep the fastest (timings on a busy machine).
         #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=100))]
         repeats: u32,
+        #[command(flatten)]
+        reference: ReferenceArgs,
+        /// Also write the reference's state at T here, as a one-row trajectory CSV (the shape
+        /// --reference reads back).
+        #[arg(long, value_name = "FILE.csv")]
+        write_reference: Option<PathBuf>,
         #[command(flatten)]
         overrides: OverrideArgs,
     },
@@ -190,14 +206,15 @@ enum Command {
         /// The scene file (TOML); the embedded default scene when left out.
         scene: Option<PathBuf>,
         /// The accuracy to meet (relative), e.g. 1e-8.
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         target: f64,
         /// What must meet it: the error at T against the reference, or the maximum relative
         /// energy error over the run.
         #[arg(long, value_enum, default_value_t = choose::Metric::Error)]
         metric: choose::Metric,
         /// The horizon T (replaces the scene's duration).
-        #[arg(long)]
+        #[arg(long, value_name = "T", allow_hyphen_values = true,
+              value_parser = parse_horizon, conflicts_with = "duration")]
         horizon: Option<f64>,
         /// Wall-clock budget of the search: seconds, or with a unit (`30s`, `2m`, `1h`).
         #[arg(long, default_value = "30s", value_parser = parse_budget)]
@@ -209,10 +226,52 @@ enum Command {
         #[arg(long)]
         write: Option<PathBuf>,
         #[command(flatten)]
+        reference: ReferenceArgs,
+        #[command(flatten)]
         overrides: OverrideArgs,
     },
     /// Print the embedded default scene (a commented starting point for your own).
     DefaultScene,
+}
+
+/// How the reference of `trade` and `choose` (`--metric error`) is made (see `lie-sim trade
+/// --help`).
+#[derive(Args, Debug, Clone)]
+struct ReferenceArgs {
+    /// The relative agreement two successive refinements of the reference must reach (in the
+    /// trade's error measure); also the accuracy a --reference file is taken to have.
+    #[arg(long, value_name = "TOL", default_value = "1e-13",
+          value_parser = parse_tolerance, allow_hyphen_values = true)]
+    reference_tolerance: f64,
+    /// The time the reference's refinement may take beyond its first two runs: seconds, or with
+    /// a unit (30s, 2m, 1h). When it runs out before the tolerance is met, one line says so and
+    /// the errors below the agreement reached are unresolved.
+    #[arg(long, value_name = "TIME", default_value = reference::DEFAULT_BUDGET,
+          value_parser = parse_budget, allow_hyphen_values = true)]
+    reference_budget: std::time::Duration,
+    /// Your own reference instead: the last row of a trajectory CSV as `lie-sim run` (or
+    /// `trade --write-reference`) writes it, at t = T, with the scene's μ and g columns; taken to
+    /// be accurate to --reference-tolerance.
+    #[arg(long, value_name = "FILE.csv")]
+    reference: Option<PathBuf>,
+}
+
+impl ReferenceArgs {
+    fn options(&self) -> reference::Options {
+        reference::Options {
+            tolerance: self.reference_tolerance,
+            budget: self.reference_budget,
+            file: self.reference.clone(),
+        }
+    }
+}
+
+fn parse_tolerance(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 && t < 1.0 => Ok(t),
+        Ok(t) => Err(format!("{t} is not a relative tolerance in (0, 1)")),
+        Err(_) => Err(format!("{s:?} is not a number")),
+    }
 }
 
 fn parse_budget(s: &str) -> Result<std::time::Duration, String> {
@@ -456,6 +515,8 @@ fn cmd_trade(
     levels: Option<u32>,
     metric: trade::Metric,
     repeats: u32,
+    reference_args: &ReferenceArgs,
+    write_reference: Option<PathBuf>,
     overrides: OverrideArgs,
 ) -> Result<(), SimError> {
     if overrides.step.is_some() {
@@ -467,7 +528,15 @@ fn cmd_trade(
     let (scene, stem) = load(scene_path, overrides)?;
     let csv = out.unwrap_or_else(|| default_path(&stem, "-trade.csv"));
     let svg = plot_path.unwrap_or_else(|| csv.with_extension("svg"));
-    output::refuse_clobbering(&[&csv, &svg], scene_path.as_slice())?;
+    let outputs: Vec<&Path> = [csv.as_path(), svg.as_path()]
+        .into_iter()
+        .chain(write_reference.as_deref())
+        .collect();
+    let inputs: Vec<&Path> = scene_path
+        .into_iter()
+        .chain(reference_args.reference.as_deref())
+        .collect();
+    output::refuse_clobbering(&outputs, &inputs)?;
     trade::check_metric(&scene, metric)?;
     let mut ladder = match steps {
         Some(list) => ladder::explicit(list.0, scene.duration)?,
@@ -497,6 +566,28 @@ fn cmd_trade(
              (--allow-large keeps them)"
         );
     }
+    let spinner = show_progress().then(|| {
+        let b = indicatif::ProgressBar::new_spinner();
+        b.set_message(format!(
+            "reference: refining (budget {:?})",
+            reference_args.reference_budget
+        ));
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
+        b
+    });
+    let made = reference::reference(&scene, &reference_args.options());
+    if let Some(b) = spinner {
+        b.finish_and_clear();
+    }
+    let reference = made?;
+    say!(
+        "reference: {}; estimated error {:.1e}",
+        reference.description,
+        reference.estimated_error
+    );
+    if let Some(line) = &reference.shortfall {
+        say!("reference: {line}");
+    }
     say!("{}", trade::table_header());
     let bar = show_progress().then(|| {
         let runs = trade::candidates().len() * ladder.steps.len();
@@ -508,22 +599,23 @@ fn cmd_trade(
         }
         b
     });
-    let report = trade::trade(&scene, &ladder.steps, repeats as usize, |r| match &bar {
-        Some(b) => {
-            b.inc(1);
-            b.suspend(|| say!("{}", trade::table_line(r)));
-        }
-        None => say!("{}", trade::table_line(r)),
-    });
+    let report = trade::trade(
+        &scene,
+        &ladder.steps,
+        repeats as usize,
+        reference,
+        |r| match &bar {
+            Some(b) => {
+                b.inc(1);
+                b.suspend(|| say!("{}", trade::table_line(r)));
+            }
+            None => say!("{}", trade::table_line(r)),
+        },
+    );
     if let Some(b) = bar {
         b.finish_and_clear();
     }
     let report = report?;
-    say!(
-        "reference: {} (estimated error {:.1e})",
-        report.reference.description,
-        report.reference.estimated_error
-    );
     say!(
         "observed orders (slope of log error against log h, over errors between {:.0} × the \
          reference's and {}):",
@@ -547,7 +639,7 @@ fn cmd_trade(
                 r.method,
                 r.h,
                 if metric == trade::Metric::Error && value < floor {
-                    format!("below the reference floor {floor:.1e}")
+                    format!("unresolved (below the reference's estimated error {floor:.1e})")
                 } else {
                     format!("{value:.2e}")
                 },
@@ -579,6 +671,10 @@ fn cmd_trade(
     }
     trade::write_outputs(&report, &scene, &csv, &svg, metric)?;
     say!("table: {}\nplot:  {}", csv.display(), svg.display());
+    if let Some(path) = write_reference {
+        output::write_atomic(&path, &report.reference.to_csv())?;
+        say!("reference state: {}", path.display());
+    }
     Ok(())
 }
 
@@ -673,10 +769,15 @@ fn cmd_choose(
     budget: std::time::Duration,
     levels: u32,
     write: Option<PathBuf>,
+    reference_args: &ReferenceArgs,
     overrides: OverrideArgs,
 ) -> Result<(), SimError> {
     if let Some(w) = &write {
-        output::refuse_clobbering(&[w], scene_path.as_slice())?;
+        let inputs: Vec<&Path> = scene_path
+            .into_iter()
+            .chain(reference_args.reference.as_deref())
+            .collect();
+        output::refuse_clobbering(&[w], &inputs)?;
     }
     let (scene, _) = load(scene_path, overrides)?;
     let spinner = show_progress().then(|| {
@@ -685,7 +786,14 @@ fn cmd_choose(
         b.enable_steady_tick(std::time::Duration::from_millis(200));
         b
     });
-    let choice = choose::choose(&scene, target, metric, levels as usize, budget);
+    let choice = choose::choose(
+        &scene,
+        target,
+        metric,
+        levels as usize,
+        budget,
+        &reference_args.options(),
+    );
     if let Some(b) = spinner {
         b.finish_and_clear();
     }
@@ -694,14 +802,23 @@ fn cmd_choose(
         choose::Metric::Error => "error at T",
         choose::Metric::Energy => "max |dE/E|",
     };
+    let floor = choice.floor.unwrap_or(0.0);
     let Some(best) = &choice.best else {
         let reached = choice.most_accurate.as_ref().map_or_else(
             || "no run completed".to_string(),
             |c| {
-                format!(
-                    "the best run reached {:.2e} ({} at h = {})",
-                    c.value, c.method, c.h
-                )
+                if c.value < floor {
+                    format!(
+                        "the best run ({} at h = {}) is below the reference's estimated error \
+                         {floor:.1e} (unresolved)",
+                        c.method, c.h
+                    )
+                } else {
+                    format!(
+                        "the best run reached {:.2e} ({} at h = {})",
+                        c.value, c.method, c.h
+                    )
+                }
             },
         );
         return Err(SimError::Choose {
@@ -723,12 +840,19 @@ fn cmd_choose(
     if let Some(r) = &choice.reference {
         say!("  reference    {r}");
     }
+    if let Some(line) = &choice.shortfall {
+        say!("  reference    {line}");
+    }
     let show = |c: &choose::Candidate| {
         format!(
-            "{} at h = {}: {what} {:.2e}, {} ({:.0} ns per unit of time)",
+            "{} at h = {}: {what} {}, {} ({:.0} ns per unit of time)",
             c.method,
             c.h,
-            c.value,
+            if c.value < floor {
+                format!("unresolved (below the reference's estimated error {floor:.1e})")
+            } else {
+                format!("{:.2e}", c.value)
+            },
             human_duration(std::time::Duration::from_secs_f64(c.seconds)),
             c.seconds * 1e9 / scene.duration
         )
@@ -836,6 +960,8 @@ fn main() -> ExitCode {
             metric,
             horizon,
             repeats,
+            reference,
+            write_reference,
             mut overrides,
         }) => {
             if horizon.is_some() {
@@ -849,6 +975,8 @@ fn main() -> ExitCode {
                 levels,
                 metric,
                 repeats,
+                &reference,
+                write_reference,
                 overrides,
             )
         }
@@ -870,6 +998,7 @@ fn main() -> ExitCode {
             budget,
             levels,
             write,
+            reference,
             mut overrides,
         }) => {
             if horizon.is_some() {
@@ -882,6 +1011,7 @@ fn main() -> ExitCode {
                 budget,
                 levels,
                 write,
+                &reference,
                 overrides,
             )
         }

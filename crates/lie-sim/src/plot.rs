@@ -275,11 +275,15 @@ pub struct Curve {
     pub points: Vec<(f64, f64)>,
 }
 
-/// What is drawn besides the curves: a horizontal line with its legend, and labelled points.
+/// What is drawn besides the curves: a horizontal line with its legend, points on it, and labelled
+/// points.
 #[derive(Default)]
 pub struct Annotations {
     /// A horizontal line at y (e.g. the reference's floor) and its label.
     pub hline: Option<(f64, String)>,
+    /// x of the points drawn as grey ▽ on the horizontal line (runs whose value is below it and
+    /// therefore not known: the errors below the reference's floor).
+    pub below: Vec<f64>,
     /// Points (x, y) to ring and label.
     pub labels: Vec<(f64, f64, String)>,
 }
@@ -341,16 +345,22 @@ pub fn plot_loglog(
     y_desc: &str,
 ) -> Result<(), SimError> {
     let ok = |&(x, y): &(f64, f64)| x.is_finite() && y.is_finite() && x > 0.0 && y > 0.0;
-    let all: Vec<(f64, f64)> = curves
-        .iter()
-        .flat_map(|c| c.points.iter().copied())
-        .filter(ok)
-        .collect();
     let floor = annotations
         .hline
         .as_ref()
         .map(|(y, _)| *y)
         .filter(|y| y.is_finite() && *y > 0.0);
+    // The curves' points and the ▽ marks on the floor (which widen the x range only).
+    let all: Vec<(f64, f64)> = curves
+        .iter()
+        .flat_map(|c| c.points.iter().copied())
+        .chain(
+            floor
+                .into_iter()
+                .flat_map(|y| annotations.below.iter().map(move |&x| (x, y))),
+        )
+        .filter(ok)
+        .collect();
     let bounds = |f: fn(&(f64, f64)) -> f64, extra: Option<f64>| {
         let lo = all.iter().map(f).chain(extra).fold(f64::INFINITY, f64::min);
         let hi = all
@@ -403,6 +413,21 @@ pub fn plot_loglog(
                 .draw_series(std::iter::once(
                     EmptyElement::at((x0, y)) + Text::new(label.clone(), (8, 4), font.clone()),
                 ))
+                .map_err(|e| plot_error(out, e))?;
+            chart
+                .draw_series(
+                    annotations
+                        .below
+                        .iter()
+                        .filter(|x| x.is_finite() && **x > 0.0)
+                        .map(|&x| {
+                            EmptyElement::at((x, y))
+                                + PathElement::new(
+                                    vec![(-5, -4), (5, -4), (0, 5), (-5, -4)],
+                                    grey.stroke_width(1),
+                                )
+                        }),
+                )
                 .map_err(|e| plot_error(out, e))?;
         }
         for (i, c) in curves.iter().enumerate() {

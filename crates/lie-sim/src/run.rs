@@ -68,10 +68,20 @@ pub fn relative_error(x: f64, x0: f64) -> f64 {
 
 /// The CSV header for a simulation's columns.
 pub fn header(sim: &dyn Simulation) -> Vec<String> {
+    columns(
+        sim.momentum().len(),
+        sim.group_side(),
+        sim.casimir().is_some(),
+    )
+}
+
+/// The trajectory columns for a momentum of `n` components, a group matrix of side `side` (`None`
+/// without reconstruction) and an optional Casimir: `t, mu1 … muN, g11 … (g1_1 … for a side of 10
+/// or more), energy[, casimir]`.
+pub fn columns(n: usize, side: Option<usize>, casimir: bool) -> Vec<String> {
     let mut h = vec!["t".to_string()];
-    let n = sim.momentum().len();
     h.extend((1..=n).map(|i| format!("mu{i}")));
-    if let Some(m) = sim.group_side() {
+    if let Some(m) = side {
         for i in 1..=m {
             for j in 1..=m {
                 // Two-digit indices (SO(n), n ≥ 10) would be ambiguous without a separator.
@@ -84,7 +94,7 @@ pub fn header(sim: &dyn Simulation) -> Vec<String> {
         }
     }
     h.push("energy".into());
-    if sim.casimir().is_some() {
+    if casimir {
         h.push("casimir".into());
     }
     h

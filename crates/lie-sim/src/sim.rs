@@ -941,6 +941,15 @@ impl<G: LieGroup, S: SplitSystem<G>> SplitSystem<G> for WithCasimir<G, S> {
     }
 }
 
+/// The entries of g's matrix, row-major (the trajectory's `g11, g12, …`).
+pub fn row_major<G: LieGroup>(g: &G) -> Vec<f64> {
+    let m = g.matrix().to_mat();
+    (0..m.nrows())
+        .flat_map(|i| (0..m.ncols()).map(move |j| (i, j)))
+        .map(|(i, j)| m[(i, j)])
+        .collect()
+}
+
 /// Any integrator of the integrators crate, seen as a [`Simulation`].
 struct Adapter<I: Integrator> {
     integrator: I,
@@ -982,12 +991,7 @@ impl<I: Integrator> Simulation for Adapter<I> {
         let mut r = vec![t];
         r.extend(mu.to_vec());
         if let Some(g) = &g {
-            let m = g.matrix().to_mat();
-            r.extend(
-                (0..m.nrows())
-                    .flat_map(|i| (0..m.ncols()).map(move |j| (i, j)))
-                    .map(|(i, j)| m[(i, j)]),
-            );
+            r.extend(row_major(g));
         }
         r.push(energy);
         r.extend(casimir);
@@ -1005,13 +1009,7 @@ impl<I: Integrator> Simulation for Adapter<I> {
             .map(|g| g.matrix().to_mat().nrows())
     }
     fn group_matrix(&self) -> Option<Vec<f64>> {
-        self.integrator.configuration().map(|g| {
-            let m = g.matrix().to_mat();
-            (0..m.nrows())
-                .flat_map(|i| (0..m.ncols()).map(move |j| (i, j)))
-                .map(|(i, j)| m[(i, j)])
-                .collect()
-        })
+        self.integrator.configuration().map(row_major)
     }
     fn energy(&self) -> f64 {
         self.integrator.energy()

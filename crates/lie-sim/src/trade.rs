@@ -8,12 +8,16 @@
 //! floor, or the `--steps` list; the exact flow also in one step to T); a composite step of size h
 //! is s base steps. Methods that do not apply to the system (euler-arnold with a potential, rk4
 //! off SO(3), the exact flow off the free body, …) are left out. Each run is compared at the final
-//! time T with a reference solution: the exact flow on the free rigid body, elsewhere the order-8
-//! composition at a step smaller than the finest of the ladder (see [`reference()`]). The table
-//! reports, per run, the cost (ns per step, total time), the error at T and the long-horizon
-//! measures of [`crate::invariants`]: the maximum relative energy, Casimir and spatial
-//! momentum-map errors over the run (`-` where they do not apply); `--metric` picks the one the
-//! plot draws against cost.
+//! time T with a reference made independently of the candidates, with its estimated error
+//! ([`crate::reference`]: the exact flow on the free rigid body, elsewhere Gragg–Bulirsch–Stoer
+//! refined until two runs agree to `--reference-tolerance`, or the user's `--reference`). An error
+//! below the reference's estimated error (the floor) measures the reference, not the method: the
+//! table prints it as `unresolved`, the CSV leaves its `error` cell empty with `error_status`
+//! `unresolved`, and the plot draws it as ▽ on the floor line. The table reports, per run, the
+//! cost (ns per step, total time), the error at T and the long-horizon measures of
+//! [`crate::invariants`]: the maximum relative energy, Casimir and spatial momentum-map errors
+//! over the run (`-` where they do not apply); `--metric` picks the one the plot draws against
+//! cost.
 //!
 //! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
 //! only where both runs reconstruct g. Timing covers the steps and the read of the state at T
@@ -25,6 +29,7 @@ use crate::error::SimError;
 use crate::invariants::Monitor;
 use crate::output::write_atomic;
 use crate::plot::{plot_loglog, Annotations, Curve, Marker, SeriesStyle};
+use crate::reference::{meets, Reference};
 use crate::run::Cell;
 use crate::scene::{steps_for, Method, MethodSpec, Scene, System, TauKind};
 use crate::sim::{build, Simulation};
@@ -46,11 +51,6 @@ pub const ORDER_FIT_REFERENCE_MARGIN: f64 = 10.0;
 /// Rows whose error is above this are outside the asymptotic regime (a phase error of order one
 /// saturates): they are left out of the order fit.
 pub const ORDER_FIT_MAX_ERROR: f64 = 0.1;
-
-/// The order-8 reference (Kahan–Li's 17-stage composition of the θ = ½ Lie–Poisson method with
-/// τ = cayley) runs at the finest step of the ladder divided by this: its error is then 2⁸ = 256
-/// times below its own at the finest step, which is already below every other method's there.
-pub const REFERENCE_REFINEMENT_ORDER8: f64 = 2.0;
 
 /// The θ values swept for each Lie method.
 pub const THETAS: [f64; 3] = [0.0, 0.5, 1.0];
@@ -183,7 +183,8 @@ pub struct FinalState {
 }
 
 impl FinalState {
-    fn of(sim: &dyn Simulation) -> Self {
+    /// The state of a simulation.
+    pub fn of(sim: &dyn Simulation) -> Self {
         Self {
             momentum: sim.momentum(),
             group: sim.group_matrix(),
@@ -285,76 +286,19 @@ pub fn timed_run(
     })
 }
 
-/// The reference solution at T and how it was made.
-#[derive(Debug, Clone)]
-pub struct Reference {
-    /// The state at T.
-    pub state: FinalState,
-    /// E.g. `rk4 at h = 6.25e-4`.
-    pub description: String,
-    /// The difference between the reference and the same method at twice its step: an upper
-    /// estimate of the reference's own error.
-    pub estimated_error: f64,
-}
-
-/// The reference at T. On the free rigid body: the exact flow (`exact`) in one step to T, its
-/// error estimated by the same flow in steps of `h_min` (the two differ by the random walk of
-/// roundings, ~1e-14). Elsewhere: Kahan–Li's order-8 composition of the θ = ½ Lie–Poisson method
-/// with τ = cayley (available for every system) at `h_min` / [`REFERENCE_REFINEMENT_ORDER8`], its
-/// error estimated by the same method at twice that step. Order 8 keeps the reference's error
-/// below that of every method of the ladder at its finest step, including the order-6 and order-8
-/// compositions, whose errors a fourth-order reference could not resolve.
-pub fn reference(scene: &Scene, h_min: f64) -> Result<Reference, SimError> {
-    let run = |m: &MethodSpec, h: f64| -> Result<FinalState, SimError> {
-        let mut sim = build(&scene.system, m, scene.reconstruct, &scene.solver)?;
-        Ok(timed_run(sim.as_mut(), &scene.system, scene.duration, h)?.state)
-    };
-    if matches!(scene.system, System::FreeRigidBody(_)) && scene.system.forces().is_none() {
-        let m = MethodSpec::plain(Method::Exact, None);
-        let fine = run(&m, scene.duration)?;
-        let coarse = run(&m, h_min)?;
-        return Ok(Reference {
-            estimated_error: coarse.error(&fine),
-            state: fine,
-            description: format!("{m}: one step to T = {}", scene.duration),
-        });
-    }
-    let h_ref = h_min / REFERENCE_REFINEMENT_ORDER8;
-    let m = MethodSpec {
-        method: Method::LiePoisson,
-        tau: Some(TauKind::Cayley),
-        theta: Some(0.5),
-        composition: Some(CompositionScheme::kahan_li_8()),
-        splitting: None,
-        processing: None,
-        modified: None,
-    };
-    let fine = run(&m, h_ref)?;
-    let coarse = run(&m, 2.0 * h_ref)?;
-    Ok(Reference {
-        estimated_error: coarse.error(&fine),
-        state: fine,
-        description: format!("{m} at h = {h_ref:.3e}"),
-    })
-}
-
 /// The work of [`trade`] before it starts: every candidate over the ladder (a composite step
-/// counts its stages), `repeats` times, and the two reference runs (the order-8 reference's 17
-/// stages at h_min/2 and h_min; the exact flow's one step and its run at h_min). Bytes: the table.
+/// counts its stages), `repeats` times. The reference is not counted: its refinement is bounded
+/// by `--reference-budget` (and its first two runs, at h₀ = 1/ω and h₀/2, cost less than the
+/// ladder's coarsest level). Bytes: the table.
 pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds::Estimate {
     let per_unit_h: u128 = candidates().iter().map(|m| m.stages() as u128).sum();
     let steps = |h: f64| u128::from(steps_for(scene.duration, h));
     let ladder_steps: u128 = ladder.iter().map(|&h| steps(h)).sum();
-    let h_min = ladder.iter().copied().fold(f64::INFINITY, f64::min);
-    let reference = steps(h_min / REFERENCE_REFINEMENT_ORDER8)
-        .saturating_add(steps(h_min))
-        .saturating_mul(17);
     crate::bounds::Estimate {
         steps: ladder_steps
             .saturating_mul(per_unit_h)
-            .saturating_mul(repeats as u128)
-            .saturating_add(reference),
-        bytes: crate::bounds::Estimate::csv((candidates().len() * (ladder.len() + 1)) as u128, 13),
+            .saturating_mul(repeats as u128),
+        bytes: crate::bounds::Estimate::csv((candidates().len() * (ladder.len() + 1)) as u128, 15),
     }
 }
 
@@ -373,6 +317,8 @@ pub struct TradeRow {
     pub seconds: f64,
     /// Error at T against the reference (NaN when the run failed).
     pub error: f64,
+    /// The reference's estimated error: an `error` below it is unresolved.
+    pub reference_error: f64,
     /// Maximum relative energy error (NaN when the run failed).
     pub max_energy_error: f64,
     /// Maximum relative Casimir error, where the system has a Casimir (`None` also when the run
@@ -385,6 +331,26 @@ pub struct TradeRow {
     pub failure: Option<String>,
     /// What the method says it is (`integrators::MethodInfo`): its order labels the plot.
     pub info: Option<MethodInfo>,
+}
+
+impl TradeRow {
+    /// The error at T where it is measured: `None` for a failed run and for an error below the
+    /// reference's estimated error (unresolved).
+    pub fn resolved_error(&self) -> Option<f64> {
+        (self.failure.is_none() && self.error.is_finite() && self.error >= self.reference_error)
+            .then_some(self.error)
+    }
+
+    /// `measured`, `unresolved` (below the reference's estimated error) or `failed`.
+    pub fn error_status(&self) -> &'static str {
+        if self.failure.is_some() {
+            "failed"
+        } else if self.resolved_error().is_some() {
+            "measured"
+        } else {
+            "unresolved"
+        }
+    }
 }
 
 /// The outcome of a trade: the rows, the reference, and the methods that were not available.
@@ -403,15 +369,15 @@ pub struct TradeReport {
 /// Runs the trade over the steps of `ladder`; each run is repeated `repeats` times from the same
 /// initial state and the fastest stepping time kept (the minimum is the least disturbed by other
 /// load on the machine; the numbers themselves are identical between repeats). `on_row` sees each
-/// row as soon as it is measured.
+/// row as soon as it is measured; `reference` is what every run is compared with
+/// ([`crate::reference::reference`]).
 pub fn trade(
     scene: &Scene,
     ladder: &[f64],
     repeats: usize,
+    reference: Reference,
     mut on_row: impl FnMut(&TradeRow),
 ) -> Result<TradeReport, SimError> {
-    let h_min = ladder.iter().copied().fold(scene.duration, f64::min);
-    let reference = reference(scene, h_min)?;
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     let mut inapplicable = Vec::new();
@@ -453,6 +419,7 @@ pub fn trade(
                     ns_per_step: t.stepping.as_nanos() as f64 / t.steps as f64,
                     seconds: t.stepping.as_secs_f64(),
                     error: t.state.error(&reference.state),
+                    reference_error: reference.estimated_error,
                     max_energy_error: t.max_energy_error,
                     max_casimir_error: t.max_casimir_error,
                     max_momentum_map_error: t.max_momentum_map_error,
@@ -466,6 +433,7 @@ pub fn trade(
                     ns_per_step: f64::NAN,
                     seconds: f64::NAN,
                     error: f64::NAN,
+                    reference_error: reference.estimated_error,
                     max_energy_error: f64::NAN,
                     max_casimir_error: None,
                     max_momentum_map_error: None,
@@ -540,10 +508,11 @@ pub fn table_line(r: &TradeRow) -> String {
     match &r.failure {
         Some(f) => format!("{head} failed: {f}"),
         None => format!(
-            "{head} {:>10} {:>11.1} {:>11.3e} {:>11.3e} {:>11} {:>11}",
+            "{head} {:>10} {:>11.1} {:>11} {:>11.3e} {:>11} {:>11}",
             r.steps,
             r.ns_per_step,
-            r.error,
+            r.resolved_error()
+                .map_or_else(|| "unresolved".into(), |e| format!("{e:.3e}")),
             r.max_energy_error,
             optional(r.max_casimir_error),
             optional(r.max_momentum_map_error)
@@ -556,17 +525,20 @@ fn optional(x: Option<f64>) -> String {
     x.map_or_else(|| "-".into(), |v| format!("{v:.3e}"))
 }
 
-/// The rows as CSV; a measure that does not apply (or of a failed run) is an empty cell.
+/// The rows as CSV; a measure that does not apply (or of a failed run) is an empty cell. The
+/// `error` cell holds the error at T only where it is resolved; `error_status` says `measured`,
+/// `unresolved` (below `reference_error`, the reference's estimated error: the cell is empty) or
+/// `failed`.
 pub fn to_csv(rows: &[TradeRow]) -> String {
     let mut s = String::from(
-        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,max_energy_error,\
-         max_casimir_error,max_momentum_map_error,failure\n",
+        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,error_status,\
+         reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,failure\n",
     );
     let cell = |x: Option<f64>| x.map_or_else(String::new, |v| Cell(v).to_string());
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.method.method_label(),
             r.method.tau_label(),
             r.method.theta_label(),
@@ -575,7 +547,9 @@ pub fn to_csv(rows: &[TradeRow]) -> String {
             r.steps,
             Cell(r.ns_per_step),
             Cell(r.seconds),
-            Cell(r.error),
+            cell(r.resolved_error()),
+            r.error_status(),
+            Cell(r.reference_error),
             Cell(r.max_energy_error),
             cell(r.max_casimir_error),
             cell(r.max_momentum_map_error),
@@ -809,8 +783,10 @@ pub fn style_of(m: &MethodSpec) -> SeriesStyle {
 
 /// The cheapest run (least stepping time) meeting each decade target 10⁻¹, 10⁻², … of `metric`,
 /// loosest target first, down to the smallest value measured and, for the error at T, no lower
-/// than `floor` (the reference's estimated error: below it nothing is resolved). A run cheapest
-/// for several consecutive targets is listed once, at the tightest.
+/// than `floor` (the reference's estimated error: below it nothing is resolved). For the error
+/// at T a run meets a target when its error bound — its error plus the floor, twice the floor
+/// for an unresolved error — is within the target ([`meets`]). A run cheapest for several
+/// consecutive targets is listed once, at the tightest.
 pub fn cheapest_per_target(rows: &[TradeRow], metric: Metric, floor: f64) -> Vec<(f64, &TradeRow)> {
     let measured: Vec<(f64, &TradeRow)> = rows
         .iter()
@@ -830,7 +806,10 @@ pub fn cheapest_per_target(rows: &[TradeRow], metric: Metric, floor: f64) -> Vec
         }
         let Some(&(_, best)) = measured
             .iter()
-            .filter(|(v, _)| *v <= target)
+            .filter(|(v, _)| match metric {
+                Metric::Error => meets(*v, floor, target),
+                _ => *v <= target,
+            })
             .min_by(|a, b| a.1.seconds.total_cmp(&b.1.seconds))
         else {
             continue;
@@ -854,6 +833,11 @@ pub fn write_outputs(
     metric: Metric,
 ) -> Result<(), SimError> {
     write_atomic(csv, &to_csv(&report.rows))?;
+    // The error at T is drawn only where it is resolved; the runs below the floor are marked on it.
+    let value = |r: &TradeRow| match metric {
+        Metric::Error => r.resolved_error(),
+        _ => metric.of(r),
+    };
     let curves: Vec<Curve> = by_method(&report.rows)
         .into_iter()
         .map(|(m, rows)| Curve {
@@ -862,18 +846,35 @@ pub fn write_outputs(
             points: rows
                 .iter()
                 .filter(|r| r.failure.is_none())
-                .filter_map(|r| Some((r.seconds, metric.of(r)?)))
+                .filter_map(|r| Some((r.seconds, value(r)?)))
                 .collect(),
         })
         .collect();
     let floor = report.reference.estimated_error;
+    let below: Vec<f64> = report
+        .rows
+        .iter()
+        .filter(|r| metric == Metric::Error && r.error_status() == "unresolved")
+        .map(|r| r.seconds)
+        .collect();
     let annotations = Annotations {
         hline: (metric == Metric::Error).then(|| {
             (
                 floor,
-                format!("reference floor: its estimated error {floor:.1e}"),
+                format!(
+                    "reference floor: its estimated error {floor:.1e}{}",
+                    if below.is_empty() {
+                        String::new()
+                    } else {
+                        format!(
+                            " (▽: {} runs below it, unresolved, drawn on it)",
+                            below.len()
+                        )
+                    }
+                ),
             )
         }),
+        below,
         labels: cheapest_per_target(&report.rows, metric, floor)
             .into_iter()
             .filter_map(|(target, r)| {
@@ -920,6 +921,7 @@ mod tests {
             ns_per_step: 1.0,
             seconds: 1.0,
             error,
+            reference_error: 0.0,
             max_energy_error: 0.0,
             max_casimir_error: None,
             max_momentum_map_error: None,
@@ -1047,11 +1049,17 @@ mod tests {
             .iter()
             .map(|(t, r)| (*t, r.seconds))
             .collect();
-        // 1e-1, 1e-2: the 1 s run (listed at 1e-2); 1e-3 … 1e-4: the 2 s run; 1e-5 … 1e-9: 8 s.
-        assert_eq!(picks, [(1e-2, 1.0), (1e-4, 2.0), (1e-9, 8.0)]);
-        // The reference's floor stops the targets: below 1e-6 nothing is resolved.
-        let picks = cheapest_per_target(&rows, Metric::Error, 1e-6);
-        assert_eq!(picks.last().map(|p| (p.0, p.1.seconds)), Some((1e-6, 8.0)));
+        // 1e-1, 1e-2: the 1 s run (listed at 1e-2); 1e-3 … 1e-4: the 2 s run; 1e-5 … 1e-8: 8 s
+        // (not 1e-9: its error plus the floor, 1e-9 + 1e-12, is beyond it).
+        assert_eq!(picks, [(1e-2, 1.0), (1e-4, 2.0), (1e-8, 8.0)]);
+        // Against a floor of 1e-6 the 1e-9 run is unresolved, bounded by 2e-6: it meets 1e-5 but
+        // not its own 1e-9, the 2 s run stays the pick at 1e-4 (2e-5 + 1e-6 within it), and the
+        // targets stop at the floor.
+        let picks: Vec<(f64, f64)> = cheapest_per_target(&rows, Metric::Error, 1e-6)
+            .iter()
+            .map(|(t, r)| (*t, r.seconds))
+            .collect();
+        assert_eq!(picks, [(1e-2, 1.0), (1e-4, 2.0), (1e-5, 8.0)]);
     }
 
     #[test]

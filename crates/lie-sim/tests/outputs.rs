@@ -1,7 +1,8 @@
 //! Outputs written like `cp`, and never at the cost of what was there: symbolic links followed,
-//! FIFOs and devices written directly, inputs and repeated outputs refused, and no debris after an
-//! interrupted run (SIGINT, SIGTERM) or a killed one. Work bounded by what was asked: limits
-//! checked up front, a shard costing only its own members.
+//! FIFOs and devices written directly, inputs and repeated outputs refused, a full device, a full
+//! filesystem and a read-only one refused in one line with the old file intact, and no debris
+//! after an interrupted run (SIGINT, SIGTERM) or a killed one. Work bounded by what was asked:
+//! limits checked up front, a shard costing only its own members (time and memory).
 
 mod common;
 
@@ -175,6 +176,96 @@ fn a_fifo_and_a_device_are_written_directly() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `/dev/full` (every write fails with ENOSPC), written directly as a character device: exit 1,
+/// one line naming the path and the cause.
+#[test]
+fn a_full_device_is_one_line() {
+    let dir = temp_dir("dev-full");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    let o = lie_sim(&["run", "s.toml", "--out", "/dev/full"], &dir);
+    assert_eq!(o.status.code(), Some(1));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("/dev/full") && err.contains("No space left on device"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Runs `script` (sh) in a private mount namespace (`unshare -rm`) with a fresh 64 KiB tmpfs
+/// mounted at `$D` and the working directory there; `$BIN` is lie-sim, `$OUT` the test's own
+/// directory (outside the tmpfs, where the script leaves what the test reads). `None` where this
+/// machine allows no such mount (no user namespaces, no unshare): the caller says it was skipped.
+fn in_small_filesystem(dir: &Path, script: &str) -> Option<std::process::Output> {
+    let mount = dir.join("mnt");
+    std::fs::create_dir_all(&mount).unwrap();
+    let full = format!(
+        "mount -t tmpfs -o size=64k lie-sim-test \"$D\" || exit 97\ncd \"$D\" || exit 97\n{script}"
+    );
+    let o = Command::new("unshare")
+        .args(["-rm", "sh", "-c", &full])
+        .env("D", &mount)
+        .env("BIN", BIN)
+        .env("OUT", dir)
+        .output()
+        .ok()?;
+    (o.status.code() != Some(97) && !stderr(&o).contains("unshare:")).then_some(o)
+}
+
+/// A full filesystem (a 64 KiB tmpfs) and a read-only one: the run fails with one line naming
+/// the output and the cause (ENOSPC, EROFS), the old file there is intact and no temporary file
+/// is left. Skipped (and said so) where no tmpfs can be mounted.
+#[test]
+fn a_full_or_read_only_filesystem_keeps_the_old_file_and_leaves_no_debris() {
+    let dir = temp_dir("small-fs");
+    std::fs::write(dir.join("s.toml"), SCENE).unwrap();
+    // A trajectory of 20 001 rows (~1.4 MB) into 64 KiB; then the same into the tmpfs remounted
+    // read-only. Each case records its exit status, stderr, the directory and the old file.
+    let script = r#"
+printf old > t.csv
+"$BIN" run "$OUT/s.toml" --out t.csv --duration 2000 --step 0.1 2> "$OUT/full.err"
+echo $? > "$OUT/full.code"
+ls -A > "$OUT/full.ls"
+cat t.csv > "$OUT/full.kept"
+mount -o remount,ro "$D" || exit 98
+"$BIN" run "$OUT/s.toml" --out t.csv 2> "$OUT/ro.err"
+echo $? > "$OUT/ro.code"
+ls -A > "$OUT/ro.ls"
+cat t.csv > "$OUT/ro.kept"
+"#;
+    let Some(o) = in_small_filesystem(&dir, script) else {
+        println!("skipped: this machine mounts no tmpfs for the test (unshare -rm)");
+        std::fs::remove_dir_all(&dir).unwrap();
+        return;
+    };
+    assert!(o.status.success(), "{}", stderr(&o));
+    let read = |f: &str| std::fs::read_to_string(dir.join(f)).unwrap();
+    for (case, cause) in [
+        ("full", "No space left on device"),
+        ("ro", "Read-only file system"),
+    ] {
+        assert_eq!(read(&format!("{case}.code")).trim(), "1", "{case}");
+        let err = read(&format!("{case}.err"));
+        assert_eq!(err.lines().count(), 1, "{case}: {err}");
+        assert!(
+            err.contains("t.csv") && err.contains(cause),
+            "{case}: {err}"
+        );
+        assert_eq!(
+            read(&format!("{case}.kept")),
+            "old",
+            "{case}: the old file changed"
+        );
+        assert_eq!(
+            read(&format!("{case}.ls")).trim(),
+            "t.csv",
+            "{case}: debris left"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// A long run interrupted by `signal` while it writes: exit 128 + signal, the old output intact, no
 /// temporary file left.
 fn interrupted(signal: &str, code: i32) {
@@ -240,28 +331,35 @@ fn temporary_files_of_dead_runs_are_cleaned_by_the_next_run() {
 }
 
 /// A 1000-member shard of a sweep of N = 10¹² members draws only its own members: it runs in a
-/// fraction of a second (materialising N momenta would need 24 TB) and writes rows 0–999; a
-/// sweep of 2⁶⁴ − 1 members is accepted too.
+/// fraction of a second and within 256 MiB of address space (`ulimit -v`; materialising N momenta
+/// would need 24 TB; the same command under 16 MiB fails, so the limit does apply) and writes
+/// rows 0–999; a sweep of 2⁶⁴ − 1 members is accepted too.
 #[test]
 fn a_small_shard_of_a_huge_sweep_costs_only_its_own_members() {
     let dir = temp_dir("huge-sweep");
     let scene = scenes_dir().join("sweep.toml");
-    let start = Instant::now();
-    let o = lie_sim(
-        &[
-            "sweep",
-            scene.to_str().unwrap(),
-            "--out",
-            "s.csv",
-            "--count",
-            "1000000000000",
-            "--shard",
-            "0/1000000000",
-            "--duration",
-            "0.05",
-        ],
-        &dir,
+    let limited = |kib: u32| {
+        Command::new("sh")
+            .args([
+                "-c",
+                &format!(
+                    "ulimit -v {kib} && exec \"$BIN\" sweep \"$SCENE\" --out s.csv --count \
+                     1000000000000 --shard 0/1000000000 --duration 0.05"
+                ),
+            ])
+            .env("BIN", BIN)
+            .env("SCENE", &scene)
+            .current_dir(&dir)
+            .output()
+            .unwrap()
+    };
+    assert!(
+        !limited(16 * 1024).status.success(),
+        "16 MiB: the limit does not bite"
     );
+    assert!(!dir.join("s.csv").exists());
+    let start = Instant::now();
+    let o = limited(256 * 1024);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(start.elapsed() < Duration::from_secs(20));
     let text = std::fs::read_to_string(dir.join("s.csv")).unwrap();

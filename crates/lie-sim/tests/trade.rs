@@ -321,6 +321,21 @@ fn bad_trade_flags_are_refused_naming_the_flag() {
         (vec!["--horizon", "NaN"], "--horizon"),
         (vec!["--horizon", "ten"], "--horizon"),
         (vec!["--metric", "speed"], "--metric"),
+        (vec!["--reference-tolerance", "0"], "--reference-tolerance"),
+        (vec!["--reference-tolerance", "1"], "--reference-tolerance"),
+        (
+            vec!["--reference-tolerance", "-1e-13"],
+            "--reference-tolerance",
+        ),
+        (
+            vec!["--reference-tolerance", "NaN"],
+            "--reference-tolerance",
+        ),
+        (vec!["--reference-budget", "0s"], "--reference-budget"),
+        (vec!["--reference-budget", "-3s"], "--reference-budget"),
+        (vec!["--reference-budget", "soon"], "--reference-budget"),
+        (vec!["--reference", "missing.csv"], "missing.csv"),
+        (vec!["--write-reference", "x.csv"], "x.csv"),
         (vec![top, "--metric", "casimir"], "--metric casimir"),
         (
             vec!["nog.toml", "--metric", "momentum-map"],
