@@ -81,9 +81,11 @@ pub trait StateSnapshot: Integrator {
 
 impl<G: LieGroup, T: Tau<G>, S: System<G>> SymmetricMethod for LiePoisson<G, T, S> {
     /// θ = ½: the discretization map (g τ(−ξ/2), g τ(ξ/2)) is symmetric under
-    /// (g_k, g_{k+1}, ξ) ↦ (g_{k+1}, g_k, −ξ), so the cotangent-lift step is symmetric.
+    /// (g_k, g_{k+1}, ξ) ↦ (g_{k+1}, g_k, −ξ), so the cotangent-lift step is symmetric; and θ = 0
+    /// or 1 without a potential or force, where the two steps coincide
+    /// ([`LiePoisson::is_self_adjoint`]).
     fn is_symmetric(&self) -> bool {
-        self.theta() == 0.5
+        self.is_self_adjoint()
     }
 }
 
