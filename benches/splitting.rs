@@ -7,12 +7,16 @@
 //!   RK4, `QuaternionRk4`, `Rkmk4`, Strang of the principal-axis rotations, the exact flow as a
 //!   method (`ExactFreeBody`), each with the attitude (`+g`); Π alone (`-g`) for RK4, Strang and
 //!   the exact flow; the implicit Lie–Poisson step (Cayley, θ = ½ and 0, `+g`) for the issue's
-//!   ratio against the hand-written RK4.
+//!   ratio against the hand-written RK4; the modified Lie–Poisson steps (order 4 and 6, θ = ½ and
+//!   0, τ = exp and Cayley, `+g`: one implicit step each) and the processed Strang splitting
+//!   (`processed/<scheme>+g`: the kernel's steps only, as a run pays them; `…/read+g`: one step and
+//!   a read of the state, which applies the processor — the cost of an output row).
 //! - `trade/exact_flow`: one call of `FreeBodyFlow::advance` to T = 1, 10, 1000 (its cost does
 //!   not grow with T), with and without R.
 //! - `trade/heavy_top`: an asymmetric top 𝕀 = diag(1, 2, 3), mgχ = (0, 0.1, 0.5), h = 0.01:
-//!   hand-written RK4, `QuaternionRk4`, `Rkmk4`, Strang of the axes + kick, and exact kinetic flow
-//!   + kicks with Strang, Blanes–Moan 4 (S6) and 6 (S10) coefficients.
+//!   hand-written RK4, `QuaternionRk4`, `Rkmk4`, Strang of the axes and kick, the exact kinetic
+//!   flow with kicks (Strang, Blanes–Moan 4 (S6) and 6 (S10) coefficients), and the processed
+//!   Strang and kinetic–kick (Strang) splittings of each processing scheme.
 //!
 //! Run: `cargo bench -p lie-integrators --bench splitting -- --warm-up-time 1 --measurement-time 2`.
 //! The figures are in docs/work-precision.md.
@@ -22,62 +26,20 @@ use criterion::{
 };
 use integrators::baselines::{QuaternionRk4, Rkmk4};
 use integrators::exact::{ExactFreeBody, FreeBodyFlow};
+use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
+use integrators::processing::{Processed, ProcessingScheme};
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
 use integrators::systems::{HeavyTop, RigidBody};
 use integrators::{Integrator, LiePoisson};
-use lie_groups::{Cayley, LieGroup, So3};
-use nalgebra::{Quaternion, Vector3};
+use lie_groups::{Cayley, ExpMap, LieGroup, So3};
+use nalgebra::Vector3;
 use std::hint::black_box;
 
 const H: f64 = 0.01;
 
-/// The plain competitor: classical RK4 on (q, Π) ∈ ℝ⁴ × ℝ³ for a body with principal moments
-/// `1/inv_i` and a constant body-frame gravity arm `mgchi` (zero for the free body), written as
-/// anyone would with nalgebra: `q̇ = ½ q ⊗ (0, Ω)`, `Π̇ = Π × Ω + mgχ × Rᵀe₃`, q renormalised
-/// once per step.
-///
-/// `GRAVITY` is a compile-time switch, as a hand-written free-body step simply has no gravity
-/// code: a run-time `mgχ ≠ 0` test in each stage costs the free-body step ~40 % (it was
-/// measured at 1.45× the branch-free step) and would flatter every ratio against it.
-#[derive(Clone)]
-struct HandRk4<const GRAVITY: bool> {
-    inv_i: Vector3<f64>,
-    mgchi: Vector3<f64>,
-    q: Quaternion<f64>,
-    pi: Vector3<f64>,
-}
-
-impl<const GRAVITY: bool> HandRk4<GRAVITY> {
-    #[inline]
-    fn rate(&self, q: &Quaternion<f64>, pi: &Vector3<f64>) -> (Quaternion<f64>, Vector3<f64>) {
-        let omega = pi.component_mul(&self.inv_i);
-        let dq = (q * Quaternion::from_imag(omega)) * 0.5;
-        let mut dpi = pi.cross(&omega);
-        if GRAVITY {
-            // Rᵀe₃ for R = R(q/|q|): the third row of the rotation matrix.
-            let (w, x, y, z) = (q.w, q.i, q.j, q.k);
-            let s = 1.0 / q.norm_squared();
-            let up = Vector3::new(
-                2.0 * (x * z - w * y),
-                2.0 * (y * z + w * x),
-                w * w - x * x - y * y + z * z,
-            ) * s;
-            dpi += self.mgchi.cross(&up);
-        }
-        (dq, dpi)
-    }
-    #[inline]
-    fn step(&mut self, h: f64) {
-        let (q, pi) = (self.q, self.pi);
-        let (l1, k1) = self.rate(&q, &pi);
-        let (l2, k2) = self.rate(&(q + l1 * (0.5 * h)), &(pi + k1 * (0.5 * h)));
-        let (l3, k3) = self.rate(&(q + l2 * (0.5 * h)), &(pi + k2 * (0.5 * h)));
-        let (l4, k4) = self.rate(&(q + l3 * h), &(pi + k3 * h));
-        let q1 = q + (l1 + (l2 + l3) * 2.0 + l4) * (h / 6.0);
-        self.pi = pi + (k1 + (k2 + k3) * 2.0 + k4) * (h / 6.0);
-        self.q = q1 / q1.norm();
-    }
-}
+#[path = "common/hand_rk4.rs"]
+mod hand_rk4;
+use hand_rk4::HandRk4;
 
 fn bench_step<I: Integrator>(group: &mut BenchmarkGroup<'_, WallTime>, id: &str, mut integ: I) {
     group.bench_function(id, |b| b.iter(|| integ.step(black_box(H)).unwrap()));
@@ -120,6 +82,29 @@ fn free_body(c: &mut Criterion) {
     for theta in [0.5, 0.0] {
         let lp = LiePoisson::<So3, Cayley, _>::new(body.clone(), theta, pi0, Some(g0())).unwrap();
         bench_step(&mut group, &format!("lp/cayley/{theta}+g"), lp);
+        for order in [4, 6] {
+            let scheme = ModifiedScheme::new(theta, order).unwrap();
+            let m =
+                ModifiedLiePoisson::<Cayley>::with_scheme(body.clone(), scheme, pi0, Some(g0()))
+                    .unwrap();
+            bench_step(&mut group, &format!("modified/cayley/{theta}/{order}+g"), m);
+            let m =
+                ModifiedLiePoisson::<ExpMap>::with_scheme(body.clone(), scheme, pi0, Some(g0()))
+                    .unwrap();
+            bench_step(&mut group, &format!("modified/exp/{theta}/{order}+g"), m);
+        }
+    }
+    for scheme in ProcessingScheme::builtin() {
+        let strang = Splitting::new(body.clone(), pi0, Some(g0())).unwrap();
+        let psi = Processed::composition(strang, scheme.clone()).unwrap();
+        let mut read = psi.clone();
+        bench_step(&mut group, &format!("processed/{}+g", scheme.name()), psi);
+        group.bench_function(format!("processed/{}/read+g", scheme.name()), |b| {
+            b.iter(|| {
+                read.step(black_box(H)).unwrap();
+                black_box(read.momentum())
+            })
+        });
     }
     group.finish();
 
@@ -158,6 +143,29 @@ fn heavy_top(c: &mut Criterion) {
         let kk =
             KineticKick::new(top.clone(), flow.clone(), scheme.clone(), pi0, Some(g0())).unwrap();
         bench_step(&mut group, &format!("kinetic-kick/{}+g", scheme.name()), kk);
+    }
+    for scheme in ProcessingScheme::builtin() {
+        let strang = Splitting::new(top.clone(), pi0, Some(g0())).unwrap();
+        let psi = Processed::composition(strang, scheme.clone()).unwrap();
+        bench_step(
+            &mut group,
+            &format!("processed-strang/{}+g", scheme.name()),
+            psi,
+        );
+        let kk = KineticKick::new(
+            top.clone(),
+            flow.clone(),
+            SplittingScheme::strang(),
+            pi0,
+            Some(g0()),
+        )
+        .unwrap();
+        let psi = Processed::composition(kk, scheme.clone()).unwrap();
+        bench_step(
+            &mut group,
+            &format!("processed-kinetic-kick/{}+g", scheme.name()),
+            psi,
+        );
     }
     group.finish();
 }

@@ -81,9 +81,11 @@ pub trait StateSnapshot: Integrator {
 
 impl<G: LieGroup, T: Tau<G>, S: System<G>> SymmetricMethod for LiePoisson<G, T, S> {
     /// θ = ½: the discretization map (g τ(−ξ/2), g τ(ξ/2)) is symmetric under
-    /// (g_k, g_{k+1}, ξ) ↦ (g_{k+1}, g_k, −ξ), so the cotangent-lift step is symmetric.
+    /// (g_k, g_{k+1}, ξ) ↦ (g_{k+1}, g_k, −ξ), so the cotangent-lift step is symmetric; and θ = 0
+    /// or 1 without a potential or force, where the two steps coincide
+    /// ([`LiePoisson::is_self_adjoint`]).
     fn is_symmetric(&self) -> bool {
-        self.theta() == 0.5
+        self.is_self_adjoint()
     }
 }
 
@@ -462,6 +464,11 @@ impl<I> Composition<I> {
     /// The base method.
     pub fn inner(&self) -> &I {
         &self.inner
+    }
+    /// The base method, mutably (for [`crate::processing::ComposedKernel`]'s processor, whose
+    /// stages are steps of the base method).
+    pub(crate) fn inner_mut(&mut self) -> &mut I {
+        &mut self.inner
     }
     /// Unwraps the base method.
     pub fn into_inner(self) -> I {

@@ -124,6 +124,12 @@ pub trait Integrator {
     fn side(&self) -> discretization::Side {
         discretization::Side::Left
     }
+    /// Why the state cannot be read, for a method whose reads compute something that can fail —
+    /// a processed method's processor P ([`crate::processing::Processed`]), whose reads are then
+    /// NaN. `None` (the default) for every method that holds its state as it is read.
+    fn read_error(&self) -> Option<IntegratorError> {
+        None
+    }
 }
 
 /// Takes `steps` steps of size h, calling `observe` after each one; stops at the first error.

@@ -25,6 +25,11 @@
 //! - [`exact`]: the exact free rigid body flow (Jacobi elliptic functions, any step, cost
 //!   independent of T), as a method ([`exact::ExactFreeBody`]) and as the kinetic piece of the
 //!   kicks ([`exact::FreeBodyFlow`], [`exact::FreeBodySe3Flow`]).
+//! - [`modified`]: the Lie–Poisson step on a modified Hamiltonian H − h²H₂ [− h⁴H₄] of the free
+//!   rigid body: order 4 or 6 at the cost of one order-2 step (θ = ½ and θ = 0).
+//! - [`processing`]: processed methods `P ∘ Kⁿ ∘ P⁻¹` of any symmetric method — effective order
+//!   6 and 8 from fewer basic steps than a composition of that order, P applied only when the
+//!   state is read ([`processing::Processed`]).
 //! - [`baselines`]: classical RK4 on (q, Π) and RKMK4, measured beside the geometric methods.
 //! - [`GraggBulirschStoer`] ([`gragg_bulirsch_stoer`]): a reference method — Gragg–Bulirsch–Stoer
 //!   extrapolation of order 2k in exponential coordinates, explicit, keeping only g on G — that
@@ -103,6 +108,7 @@ pub mod gragg_bulirsch_stoer;
 mod integrator;
 pub mod lie_poisson;
 pub mod modified;
+pub mod processing;
 pub mod solver;
 pub mod splitting;
 mod system;

@@ -232,6 +232,9 @@ pub fn scene_with(text: &str, chosen: &Candidate, duration: f64) -> Result<Strin
         "theta",
         "composition",
         "splitting",
+        "processing",
+        "modified",
+        "order",
         "step",
         "duration",
     ] {
@@ -250,6 +253,13 @@ pub fn scene_with(text: &str, chosen: &Candidate, duration: f64) -> Result<Strin
     }
     if let Some(s) = &m.splitting {
         it.insert("splitting".into(), s.name().into());
+    }
+    if let Some(p) = &m.processing {
+        it.insert("processing".into(), p.name().into());
+    }
+    if let Some(order) = m.modified {
+        it.insert("modified".into(), true.into());
+        it.insert("order".into(), i64::from(order).into());
     }
     it.insert("step".into(), chosen.h.into());
     it.insert("duration".into(), duration.into());

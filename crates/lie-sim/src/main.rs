@@ -412,6 +412,22 @@ fn cmd_run(
             c.stages()
         );
     }
+    if let Some(p) = &m.processing {
+        say!(
+            "  processing   {} (effective order {}: {} base steps per step, a processor of {} \
+             at each output)",
+            p.name(),
+            p.order(),
+            p.kernel_stages(),
+            p.processor_stages()
+        );
+    }
+    if let Some(order) = m.modified {
+        say!(
+            "  modified     H − h²H₂{} (order {order} at the cost of one step)",
+            if order == 6 { " − h⁴H₄" } else { "" }
+        );
+    }
     say!("  properties   {}", summary.info);
     if let Some(f) = scene.system.forces() {
         say!("  forces       {}", f.describe());

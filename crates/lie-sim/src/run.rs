@@ -136,7 +136,14 @@ pub fn run_scene(
         &scene.solver,
     )?;
     let n = u128::from(scene.steps());
-    let stages = scene.method.composition.as_ref().map_or(1, |c| c.stages()) as u128;
+    // The runner reads the state after every step (energy monitor, rows, events): a processed
+    // method pays its processor there too.
+    let stages = (scene.method.stages()
+        + scene
+            .method
+            .processing
+            .as_ref()
+            .map_or(0, |p| p.processor_stages())) as u128;
     let rows = 2 + n / u128::from(scene.stride);
     let estimate = crate::bounds::Estimate {
         steps: n.saturating_mul(stages),
@@ -241,6 +248,13 @@ pub fn run_simulation(
         taken += 1;
         let e = sim.energy();
         if !e.is_finite() {
+            if let Some(message) = sim.read_error() {
+                return Err(SimError::Step {
+                    step: k,
+                    time: t,
+                    message: format!("reading the state: {message}"),
+                });
+            }
             return Err(SimError::NonFinite { step: k, time: t });
         }
         max_e = max_e.max(relative_error(e, e0));

@@ -29,9 +29,12 @@
 //! # tolerance = 1e-14               # implicit solver options (default: the integrators crate's)
 //! # max_iterations = 50
 //! # composition = "kahan-li-6"      # optional: compose the θ = ½ method to order 4, 6, 8, … (below)
+//! # processing = "blanes-casas-murua-6-11"  # optional: the processed method P ∘ Kⁿ ∘ P⁻¹ of a
+//!                                   #   symmetric base, effective order 6 (below)
 //! # splitting = "blanes-moan-4"     # kinetic-kick only: strang (default) | blanes-moan-4 | blanes-moan-6
-//! # modified = true                 # lie-poisson θ = 0.5 on the modified Hamiltonian: order 4
-//!                                   #   at the cost of order 2 (free-rigid-body)
+//! # modified = true                 # lie-poisson (θ = 0.5 or 0) on the modified Hamiltonian:
+//!                                   #   order 4 or 6 at the cost of order 2 (free-rigid-body)
+//! # order = 6                       # modified only: 4 (H − h²H₂, default) or 6 (− h⁴H₄ too)
 //!
 //! [output]
 //! stride = 10                       # write every 10th step (default 1); t = 0 and t = T always
@@ -71,6 +74,20 @@
 //! `suzuki-4|6|8|10`, `mclachlan-4`, `kahan-li-6`, `kahan-li-8`, `mclachlan-8`,
 //! `sofroniou-spaletta-10`): one step of size h is the steps γ₁h, …, γ_s h of the base method.
 //! It needs a symmetric base: `lie-poisson`, `euler-poincare` or `euler-arnold` with θ = 0.5.
+//!
+//! `processing` names a scheme of `integrators::processing::ProcessingScheme` (`blanes-6`: 7
+//! base steps a step; `blanes-casas-murua-6-11`: 11; `blanes-casas-murua-6-13`: 13): the
+//! processed method `P ∘ Kⁿ ∘ P⁻¹` of effective order 6, whose kernel K is a composition of the
+//! symmetric base method and whose processor P (10–12 base steps) runs only when the state is
+//! read, never as part of a step. `lie-sim run` reads the state after every step (its energy
+//! monitor and events), so there a processed method pays P every step; `trade` reads every 8
+//! steps and at T, `sweep` every `monitor_every` steps. It needs a symmetric base as
+//! `composition` does, or `splitting` / `kinetic-kick`, and does not go with `composition` or
+//! `modified`.
+//!
+//! `modified = true` runs `lie-poisson` (θ = 0.5 or θ = 0; τ = exp or cayley) on the modified
+//! Hamiltonian `H − h²H₂` (`order = 4`, the default) or `H − h²H₂ − h⁴H₄` (`order = 6`) of
+//! `integrators::modified`: order 4 or 6 at the cost of one order-2 step, free rigid body only.
 //!
 //! The explicit methods of `integrators::splitting` and `integrators::exact`:
 //! - `splitting`: Strang splitting of h into pieces with exact flows (the free body's rotations
@@ -119,6 +136,7 @@ pub use crate::forces::{Forces, RawForces};
 pub use crate::vehicles::{
     CoupledBodies, Gyrostat, Quadrotor, RawBody, RawBodyState, RawSpring, UnderwaterVehicle,
 };
+use integrators::processing::ProcessingScheme;
 use integrators::splitting::SplittingScheme;
 use integrators::CompositionScheme;
 use lie_groups::{LieGroup, So3};
@@ -299,16 +317,21 @@ pub struct MethodSpec {
     pub composition: Option<CompositionScheme>,
     /// The coefficients of `kinetic-kick` (Strang, Blanes–Moan 4 or 6).
     pub splitting: Option<SplittingScheme>,
-    /// Lie–Poisson θ = ½ on the modified Hamiltonian H − h²H₂ (order 4; free rigid body).
-    pub modified: bool,
+    /// The processed method P ∘ Kⁿ ∘ P⁻¹ of the symmetric base method (effective order 6).
+    pub processing: Option<ProcessingScheme>,
+    /// Lie–Poisson (θ = ½ or 0) on the modified Hamiltonian, of this order (4: H − h²H₂; 6:
+    /// H − h²H₂ − h⁴H₄; free rigid body).
+    pub modified: Option<u32>,
 }
 
 impl MethodSpec {
     /// The method's name for tables: its scene name, `modified-lie-poisson` for the modified
-    /// Hamiltonian.
+    /// Hamiltonian, `processed-<base>` for a processed method.
     pub fn method_label(&self) -> String {
-        if self.modified {
+        if self.modified.is_some() {
             format!("modified-{}", self.method.name())
+        } else if self.processing.is_some() {
+            format!("processed-{}", self.method.name())
         } else {
             self.method.name().into()
         }
@@ -321,13 +344,28 @@ impl MethodSpec {
     pub fn theta_label(&self) -> String {
         self.theta.map_or_else(|| "-".into(), |t| format!("{t}"))
     }
-    /// The composition scheme's name for tables, or the kinetic–kick coefficients' (`-` without
-    /// either).
+    /// The composition or processing scheme's name for tables, the modified Hamiltonian's order
+    /// (`order-4`, `order-6`), or the kinetic–kick coefficients' (`-` without any).
     pub fn composition_label(&self) -> String {
+        if let Some(p) = &self.processing {
+            return p.name().into();
+        }
+        if let Some(order) = self.modified {
+            return format!("order-{order}");
+        }
         match (&self.composition, &self.splitting) {
             (Some(c), _) => c.name().into(),
             (None, Some(s)) => s.name().into(),
             (None, None) => "-".into(),
+        }
+    }
+    /// Base-method steps per step: the composition's or the processing kernel's stages, 1
+    /// otherwise (a processed method also pays its processor's stages at each read).
+    pub fn stages(&self) -> usize {
+        match (&self.composition, &self.processing) {
+            (Some(c), _) => c.stages(),
+            (None, Some(p)) => p.kernel_stages(),
+            (None, None) => 1,
         }
     }
     /// A method without τ, θ or composition (rk4), or with the given τ (rkmk4).
@@ -338,7 +376,8 @@ impl MethodSpec {
             theta: None,
             composition: None,
             splitting: None,
-            modified: false,
+            processing: None,
+            modified: None,
         }
     }
 }
@@ -348,8 +387,11 @@ impl fmt::Display for MethodSpec {
         if let Some(c) = &self.composition {
             write!(f, "{} ∘ ", c.name())?;
         }
-        if self.modified {
-            f.write_str("modified ")?;
+        if let Some(p) = &self.processing {
+            write!(f, "processed {} ∘ ", p.name())?;
+        }
+        if let Some(order) = self.modified {
+            write!(f, "modified (order {order}) ")?;
         }
         write!(f, "{}", self.method)?;
         if let Some(s) = &self.splitting {
@@ -528,8 +570,13 @@ pub struct RawIntegrator {
     pub composition: Option<String>,
     /// Coefficients of `kinetic-kick`: `strang`, `blanes-moan-4` or `blanes-moan-6`.
     pub splitting: Option<String>,
-    /// `lie-poisson` with θ = 0.5 on the modified Hamiltonian (order 4, free rigid body).
+    /// Processing scheme around a symmetric base method (a name
+    /// `integrators::processing::ProcessingScheme` parses, e.g. `blanes-casas-murua-6-11`).
+    pub processing: Option<String>,
+    /// `lie-poisson` with θ = 0.5 or 0 on the modified Hamiltonian (free rigid body).
     pub modified: Option<bool>,
+    /// The order of the modified Hamiltonian: 4 (default) or 6.
+    pub order: Option<u32>,
 }
 
 /// `[sweep]`: many initial momenta drawn around the scene's μ₀, for `lie-sim sweep`.
@@ -1180,23 +1227,92 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
             ))
         }
     };
-    let modified = it.modified.unwrap_or(false);
-    if modified && !(m == Method::LiePoisson && theta == Some(0.5) && composition.is_none()) {
-        return Err((
-            "integrator.modified".into(),
-            format!(
-                "the modified Hamiltonian is derived for lie-poisson with θ = 0.5 and no \
-                 composition (it is order 4 on its own), got {m}{}",
-                theta.map_or_else(String::new, |t| format!(" with θ = {t}"))
-            ),
-        ));
-    }
+    let modified = match (it.modified.unwrap_or(false), it.order) {
+        (false, None) => None,
+        (false, Some(order)) => {
+            return Err((
+                "integrator.order".into(),
+                format!("order = {order} is the order of the modified Hamiltonian: it needs modified = true"),
+            ))
+        }
+        (true, order) => {
+            let order = order.unwrap_or(4);
+            if order != 4 && order != 6 {
+                return Err((
+                    "integrator.order".into(),
+                    format!("the modified Hamiltonian is derived to order 4 and 6, got {order}"),
+                ));
+            }
+            let theta_ok = matches!(theta, Some(t) if t == 0.5 || t == 0.0);
+            if !(m == Method::LiePoisson && theta_ok && composition.is_none()) {
+                return Err((
+                    "integrator.modified".into(),
+                    format!(
+                        "the modified Hamiltonian is derived for lie-poisson with θ = 0.5 or 0 and no \
+                         composition (it is order {order} on its own), got {m}{}",
+                        theta.map_or_else(String::new, |t| format!(" with θ = {t}"))
+                    ),
+                ));
+            }
+            Some(order)
+        }
+    };
+    let processing = match &it.processing {
+        None => None,
+        Some(name) => {
+            let field = "integrator.processing";
+            let scheme: ProcessingScheme = name.parse().map_err(|_| {
+                let known: Vec<&str> = ProcessingScheme::builtin()
+                    .iter()
+                    .map(|p| p.name())
+                    .collect();
+                (
+                    field.to_string(),
+                    format!(
+                        "unknown processing scheme \"{name}\" (known: {})",
+                        known.join(", ")
+                    ),
+                )
+            })?;
+            if composition.is_some() || modified.is_some() {
+                return Err((
+                    field.into(),
+                    format!(
+                        "{} processes a composition of the base method itself: it does not go \
+                         with `composition` or `modified`",
+                        scheme.name()
+                    ),
+                ));
+            }
+            let symmetric_base = (matches!(
+                m,
+                Method::LiePoisson | Method::EulerPoincare | Method::EulerArnold
+            ) && theta == Some(0.5))
+                || matches!(m, Method::Splitting | Method::KineticKick);
+            if !symmetric_base {
+                let base = match theta {
+                    Some(th) => format!("{m} with θ = {th}"),
+                    None => m.to_string(),
+                };
+                return Err((
+                    field.into(),
+                    format!(
+                        "{} needs a symmetric base method (lie-poisson, euler-poincare or \
+                         euler-arnold with θ = 0.5, splitting or kinetic-kick), got {base}",
+                        scheme.name()
+                    ),
+                ));
+            }
+            Some(scheme)
+        }
+    };
     Ok(MethodSpec {
         method: m,
         tau,
         theta,
         composition,
         splitting,
+        processing,
         modified,
     })
 }
@@ -1206,7 +1322,7 @@ fn check_method(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
 /// modified Hamiltonian off the free body. The one place these rules live: the scene check and `sim::dispatch` both ask here.
 pub fn inapplicable(spec: &MethodSpec, system: &System) -> Option<String> {
     if system.forces().is_some()
-        && (spec.modified || matches!(spec.method, Method::Exact | Method::EulerArnold))
+        && (spec.modified.is_some() || matches!(spec.method, Method::Exact | Method::EulerArnold))
     {
         return Some(format!(
             "{} does not take external forces ([forces]); use lie-poisson, euler-poincare, \
@@ -1214,7 +1330,7 @@ pub fn inapplicable(spec: &MethodSpec, system: &System) -> Option<String> {
             spec.method_label()
         ));
     }
-    if spec.modified && !matches!(system, System::FreeRigidBody(_)) {
+    if spec.modified.is_some() && !matches!(system, System::FreeRigidBody(_)) {
         return Some(
             "the modified Hamiltonian (modified = true) is derived for the free rigid body only"
                 .into(),

@@ -18,7 +18,8 @@ use integrators::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
 use integrators::forces::{
     BodyInputMap, BodyTorque, ControlInput, Forced, LinearDamping, QuadraticDrag,
 };
-use integrators::modified::ModifiedLiePoisson;
+use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
+use integrators::processing::Processed;
 use integrators::splitting::{KineticFlow, KineticKick, SplitSystem, Splitting, SplittingScheme};
 use integrators::systems::{
     CoupledBodies as CoupledBodiesSystem, GeneralizedRigidBody, Gyrostat as GyrostatSystem,
@@ -26,8 +27,8 @@ use integrators::systems::{
     RigidBody, RigidBodySe3 as RigidBodySe3System, Spring, UnderwaterVehicle as VehicleSystem,
 };
 use integrators::{
-    Composition, CompositionScheme, EulerArnold, EulerPoincare, Integrator, IntegratorError,
-    LiePoisson, QuaternionRk4, Rkmk4, SolverConfig, SolverKind, StateSnapshot, SymmetricMethod,
+    Composition, EulerArnold, EulerPoincare, Integrator, IntegratorError, LiePoisson,
+    QuaternionRk4, Rkmk4, SolverConfig, SolverKind, StateSnapshot, SymmetricMethod,
 };
 use lie_groups::{
     Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Operator, Power, PowerAlgebra,
@@ -64,6 +65,11 @@ pub trait Simulation {
     fn spatial_momentum(&self) -> Option<Vec<f64>>;
     /// What the method is and keeps, as it describes itself (`integrators::MethodInfo`).
     fn info(&self) -> integrators::MethodInfo;
+    /// Why the state cannot be read, when its reads computed NaN (a processed method whose
+    /// processor failed: `integrators::Integrator::read_error`); `None` otherwise.
+    fn read_error(&self) -> Option<String> {
+        None
+    }
 
     /// The current state as a trajectory row: t, μ, g's entries (when reconstructed), energy,
     /// Casimir (when the system has one) — the columns of `run::header`.
@@ -392,19 +398,21 @@ impl<G: LieGroup> Integrator for Boxed<G> {
     fn info(&self) -> integrators::MethodInfo {
         self.0.info()
     }
+    fn read_error(&self) -> Option<IntegratorError> {
+        self.0.read_error()
+    }
 }
 
-/// `inner`, or `inner` composed with `scheme` (which refuses a base that is not symmetric).
-fn composed<I>(
-    inner: I,
-    scheme: &Option<CompositionScheme>,
-) -> Result<Boxed<I::Group>, IntegratorError>
+/// `inner`, or `inner` composed with the spec's composition scheme, or processed by its
+/// processing scheme (both refuse a base that is not symmetric).
+fn composed<I>(inner: I, spec: &MethodSpec) -> Result<Boxed<I::Group>, IntegratorError>
 where
-    I: SymmetricMethod + StateSnapshot + 'static,
+    I: SymmetricMethod + StateSnapshot + Clone + 'static,
 {
-    Ok(match scheme {
-        None => Boxed::new(inner),
-        Some(s) => Boxed::new(Composition::new(inner, s.clone())?),
+    Ok(match (&spec.composition, &spec.processing) {
+        (Some(s), _) => Boxed::new(Composition::new(inner, s.clone())?),
+        (None, Some(p)) => Boxed::new(Processed::composition(inner, p.clone())?),
+        (None, None) => Boxed::new(inner),
     })
 }
 
@@ -426,11 +434,11 @@ impl Builder {
     ) -> Result<Boxed<G>, IntegratorError>
     where
         G: CayleyGroup + 'static,
-        S: integrators::System<G> + 'static,
+        S: integrators::System<G> + Clone + 'static,
     {
         let theta = self.method.theta.unwrap_or(0.0);
         let c = self.config;
-        let comp = &self.method.composition;
+        let comp = &self.method;
         match (self.method.method, self.method.tau) {
             (Method::Rkmk4, _) => Ok(Boxed::new(Rkmk4::<G, S>::new(system, mu0, g0)?)),
             (Method::EulerPoincare, Some(TauKind::Exp)) => composed(
@@ -487,12 +495,10 @@ impl Builder {
     ) -> Result<Boxed<G>, IntegratorError>
     where
         G: CayleyGroup + 'static,
-        S: SplitSystem<G> + 'static,
+        S: SplitSystem<G> + Clone + 'static,
     {
         match self.method.method {
-            Method::Splitting => {
-                composed(Splitting::new(system, mu0, g0)?, &self.method.composition)
-            }
+            Method::Splitting => composed(Splitting::new(system, mu0, g0)?, &self.method),
             _ => self.make(system, mu0, g0),
         }
     }
@@ -519,8 +525,8 @@ impl Builder {
     ) -> Result<Boxed<G>, IntegratorError>
     where
         G: CayleyGroup + 'static,
-        S: SplitSystem<G> + 'static,
-        K: KineticFlow<G> + 'static,
+        S: SplitSystem<G> + Clone + 'static,
+        K: KineticFlow<G> + Clone + 'static,
     {
         match self.method.method {
             Method::KineticKick => {
@@ -529,7 +535,10 @@ impl Builder {
                     .splitting
                     .clone()
                     .unwrap_or_else(SplittingScheme::strang);
-                Ok(Boxed::new(KineticKick::new(system, flow, scheme, mu0, g0)?))
+                composed(
+                    KineticKick::new(system, flow, scheme, mu0, g0)?,
+                    &self.method,
+                )
             }
             _ => self.make_split(system, mu0, g0),
         }
@@ -543,13 +552,18 @@ impl Builder {
         mu0: Vector3<f64>,
         g0: Option<So3>,
     ) -> Result<Boxed<So3>, IntegratorError> {
-        if self.method.modified {
+        if let Some(order) = self.method.modified {
             let c = self.config;
+            let scheme = ModifiedScheme::new(self.method.theta.unwrap_or(0.5), order)?;
             return Ok(match self.method.tau {
-                Some(TauKind::Exp) => {
-                    Boxed::new(ModifiedLiePoisson::<ExpMap>::new(body, mu0, g0)?.with_solver(c))
-                }
-                _ => Boxed::new(ModifiedLiePoisson::<Cayley>::new(body, mu0, g0)?.with_solver(c)),
+                Some(TauKind::Exp) => Boxed::new(
+                    ModifiedLiePoisson::<ExpMap>::with_scheme(body, scheme, mu0, g0)?
+                        .with_solver(c),
+                ),
+                _ => Boxed::new(
+                    ModifiedLiePoisson::<Cayley>::with_scheme(body, scheme, mu0, g0)?
+                        .with_solver(c),
+                ),
             });
         }
         match self.method.method {
@@ -589,7 +603,7 @@ impl Builder {
         g0: Option<So3>,
     ) -> Result<Boxed<So3>, IntegratorError>
     where
-        S: SplitSystem<So3> + 'static,
+        S: SplitSystem<So3> + Clone + 'static,
     {
         match self.method.method {
             Method::KineticKick => self.make_kinetic_or_split(system, flow, mu0, g0),
@@ -605,7 +619,7 @@ impl Builder {
         g0: Option<So3>,
     ) -> Result<Boxed<So3>, IntegratorError>
     where
-        S: SplitSystem<So3> + 'static,
+        S: SplitSystem<So3> + Clone + 'static,
     {
         match self.method.method {
             Method::Rk4 => Ok(Boxed::new(QuaternionRk4::new(system, mu0, g0)?)),
@@ -1017,6 +1031,9 @@ impl<I: Integrator> Simulation for Adapter<I> {
     }
     fn info(&self) -> integrators::MethodInfo {
         self.integrator.info()
+    }
+    fn read_error(&self) -> Option<String> {
+        self.integrator.read_error().map(|e| e.to_string())
     }
 }
 

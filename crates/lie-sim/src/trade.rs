@@ -20,9 +20,10 @@
 //! cost.
 //!
 //! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
-//! only where both runs reconstruct g. Timing covers only the steps: the invariants are sampled
-//! every [`ENERGY_SAMPLE`] steps (and at T) outside the timed intervals, so that the table
-//! measures the integrator, not the bookkeeping, and nothing of the trajectory is stored.
+//! only where both runs reconstruct g. Timing covers the steps and the read of the state at T
+//! (for a processed method that read applies its processor P, part of the run's cost): the
+//! invariants are sampled every [`ENERGY_SAMPLE`] steps outside the timed intervals, so that the
+//! table measures the integrator, not the bookkeeping, and nothing of the trajectory is stored.
 
 use crate::error::SimError;
 use crate::invariants::Monitor;
@@ -32,8 +33,9 @@ use crate::reference::{meets, Reference};
 use crate::run::Cell;
 use crate::scene::{steps_for, Method, MethodSpec, Scene, System, TauKind};
 use crate::sim::{build, Simulation};
+use integrators::processing::ProcessingScheme;
 use integrators::splitting::SplittingScheme;
-use integrators::CompositionScheme;
+use integrators::{CompositionScheme, MethodInfo};
 use plotters::style::RGBColor;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -81,7 +83,8 @@ pub fn candidates() -> Vec<MethodSpec> {
                     theta: Some(theta),
                     composition: None,
                     splitting: None,
-                    modified: false,
+                    processing: None,
+                    modified: None,
                 });
             }
         }
@@ -94,18 +97,42 @@ pub fn candidates() -> Vec<MethodSpec> {
                 theta: Some(0.5),
                 composition: Some(scheme(name)),
                 splitting: None,
-                modified: false,
+                processing: None,
+                modified: None,
             });
         }
     }
-    for tau in [TauKind::Exp, TauKind::Cayley] {
+    for (theta, order) in MODIFIED {
+        for tau in [TauKind::Exp, TauKind::Cayley] {
+            v.push(MethodSpec {
+                method: Method::LiePoisson,
+                tau: Some(tau),
+                theta: Some(theta),
+                composition: None,
+                splitting: None,
+                processing: None,
+                modified: Some(order),
+            });
+        }
+    }
+    for p in ProcessingScheme::builtin() {
+        for tau in [TauKind::Exp, TauKind::Cayley] {
+            v.push(MethodSpec {
+                method: Method::LiePoisson,
+                tau: Some(tau),
+                theta: Some(0.5),
+                processing: Some(p.clone()),
+                ..MethodSpec::plain(Method::LiePoisson, None)
+            });
+        }
         v.push(MethodSpec {
-            method: Method::LiePoisson,
-            tau: Some(tau),
-            theta: Some(0.5),
-            composition: None,
-            splitting: None,
-            modified: true,
+            processing: Some(p.clone()),
+            ..MethodSpec::plain(Method::Splitting, None)
+        });
+        v.push(MethodSpec {
+            processing: Some(p),
+            splitting: Some(SplittingScheme::strang()),
+            ..MethodSpec::plain(Method::KineticKick, None)
         });
     }
     v.push(MethodSpec::plain(Method::Splitting, None));
@@ -126,6 +153,10 @@ pub fn candidates() -> Vec<MethodSpec> {
     v.push(MethodSpec::plain(Method::Rkmk4, Some(TauKind::Exp)));
     v
 }
+
+/// The modified Lie–Poisson methods of the trade, as (θ, order): every one derived (for τ = exp
+/// the θ = 0 and θ = ½ schemes are the same map, θ = 0 the cheaper step).
+pub const MODIFIED: [(f64, u32); 4] = [(0.5, 4), (0.0, 4), (0.5, 6), (0.0, 6)];
 
 /// The compositions of the Strang splitting in the trade: order 4 (3 and 5 stages) and 6.
 pub const SPLITTING_COMPOSITIONS: [&str; 3] = ["triple-jump-4", "mclachlan-4", "kahan-li-6"];
@@ -210,6 +241,7 @@ pub fn timed_run(
     let mut monitor = Monitor::new(sim, system);
     let mut stepping = Duration::ZERO;
     let mut k = 0u64;
+    let mut state = None;
     while k < n {
         let chunk_end = (k + ENERGY_SAMPLE).min(n);
         let start = Instant::now();
@@ -224,9 +256,20 @@ pub fn timed_run(
             }
             k += 1;
         }
+        if k == n {
+            // The state at T is part of the run's cost: for a processed method, the processor.
+            state = Some(FinalState::of(sim));
+        }
         stepping += start.elapsed();
         let e = monitor.sample(sim);
         if !e.is_finite() {
+            if let Some(message) = sim.read_error() {
+                return Err(SimError::Step {
+                    step: k - 1,
+                    time: sim.time(),
+                    message: format!("reading the state: {message}"),
+                });
+            }
             return Err(SimError::NonFinite {
                 step: k - 1,
                 time: sim.time(),
@@ -234,7 +277,7 @@ pub fn timed_run(
         }
     }
     Ok(Timed {
-        state: FinalState::of(sim),
+        state: state.unwrap_or_else(|| FinalState::of(sim)),
         steps: n,
         stepping,
         max_energy_error: monitor.energy,
@@ -248,10 +291,7 @@ pub fn timed_run(
 /// by `--reference-budget` (and its first two runs, at h₀ = 1/ω and h₀/2, cost less than the
 /// ladder's coarsest level). Bytes: the table.
 pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds::Estimate {
-    let per_unit_h: u128 = candidates()
-        .iter()
-        .map(|m| m.composition.as_ref().map_or(1, |c| c.stages()) as u128)
-        .sum();
+    let per_unit_h: u128 = candidates().iter().map(|m| m.stages() as u128).sum();
     let steps = |h: f64| u128::from(steps_for(scene.duration, h));
     let ladder_steps: u128 = ladder.iter().map(|&h| steps(h)).sum();
     crate::bounds::Estimate {
@@ -289,6 +329,8 @@ pub struct TradeRow {
     pub max_momentum_map_error: Option<f64>,
     /// Why the run failed, if it did.
     pub failure: Option<String>,
+    /// What the method says it is (`integrators::MethodInfo`): its order labels the plot.
+    pub info: Option<MethodInfo>,
 }
 
 impl TradeRow {
@@ -342,6 +384,7 @@ pub fn trade(
     for m in candidates() {
         for h in steps_of(&m, ladder, scene.duration) {
             let mut best: Option<Result<Timed, SimError>> = None;
+            let mut info = None;
             for _ in 0..repeats.max(1) {
                 let mut sim = match build(&scene.system, &m, scene.reconstruct, &scene.solver) {
                     Ok(s) => s,
@@ -352,6 +395,7 @@ pub fn trade(
                     }
                     Err(e) => return Err(e),
                 };
+                info = Some(sim.info());
                 let t = timed_run(sim.as_mut(), &scene.system, scene.duration, h);
                 best = Some(match (best, t) {
                     (Some(Ok(b)), Ok(t)) if b.stepping <= t.stepping => Ok(b),
@@ -380,6 +424,7 @@ pub fn trade(
                     max_casimir_error: t.max_casimir_error,
                     max_momentum_map_error: t.max_momentum_map_error,
                     failure: None,
+                    info,
                 },
                 Err(e) => TradeRow {
                     method: m.clone(),
@@ -393,6 +438,7 @@ pub fn trade(
                     max_casimir_error: None,
                     max_momentum_map_error: None,
                     failure: Some(e.to_string()),
+                    info,
                 },
             };
             on_row(&row);
@@ -621,6 +667,21 @@ pub fn fit_to_limits(
     dropped
 }
 
+/// A series' label in the plot: the method, and the order it reports through
+/// `integrators::MethodInfo` (effective for a processed method), e.g.
+/// `processed blanes-casas-murua-6-11 ∘ splitting — order 6, explicit`.
+pub fn curve_label(m: &MethodSpec, info: Option<MethodInfo>) -> String {
+    match info {
+        Some(i) if i.order == MethodInfo::EXACT => format!("{m} — exact"),
+        Some(i) => format!(
+            "{m} — order {}, {}",
+            i.order,
+            if i.explicit { "explicit" } else { "implicit" }
+        ),
+        None => m.to_string(),
+    }
+}
+
 /// Groups rows by method, in first-seen order.
 pub fn by_method(rows: &[TradeRow]) -> Vec<(MethodSpec, Vec<&TradeRow>)> {
     let mut groups: Vec<(MethodSpec, Vec<&TradeRow>)> = Vec::new();
@@ -635,10 +696,12 @@ pub fn by_method(rows: &[TradeRow]) -> Vec<(MethodSpec, Vec<&TradeRow>)> {
 
 /// The colour of a method's family in the plot: Lie–Poisson, Euler–Poincaré, Euler–Arnold, the
 /// compositions (of Lie–Poisson), the splittings (Strang, its compositions, kinetic–kick), the
-/// exact flow, the Runge–Kutta baselines (rk4, rkmk4) and the modified Lie–Poisson method.
+/// exact flow, the Runge–Kutta baselines (rk4, rkmk4), the modified Lie–Poisson methods and the
+/// processed methods.
 pub fn family(m: &MethodSpec) -> (&'static str, RGBColor) {
     match m.method {
-        Method::LiePoisson if m.modified => ("modified", RGBColor(227, 119, 194)),
+        Method::LiePoisson if m.modified.is_some() => ("modified", RGBColor(227, 119, 194)),
+        _ if m.processing.is_some() => ("processed", RGBColor(23, 190, 207)),
         Method::LiePoisson if m.composition.is_some() => ("compositions", RGBColor(44, 160, 44)),
         Method::LiePoisson => ("lie-poisson", RGBColor(31, 119, 180)),
         Method::EulerPoincare => ("euler-poincare", RGBColor(255, 127, 14)),
@@ -653,11 +716,42 @@ pub fn family(m: &MethodSpec) -> (&'static str, RGBColor) {
 /// member of a pair without τ: kinetic–kick beside splitting, rkmk4 beside rk4) dashed with
 /// hollow markers, τ = exp solid with filled ones; the marker by θ (0 ▲, ½ ●, 1 ■) or by
 /// scheme (order-4 triple jump ▲, McLachlan's ×, order 6 ■, order 8 ◆; the kinetic–kick
-/// schemes ●, ▲, ■ by order; the exact flow ◆).
+/// schemes ●, ▲, ■ by order; the exact flow ◆); the modified Lie–Poisson methods by (θ, order)
+/// (½ and 4 ●, 0 and 4 ▲, ½ and 6 ■, 0 and 6 ◆); the processed methods by scheme (blanes-6 ●,
+/// 6-11 ▲, 6-13 ■) and base (Lie–Poisson exp solid filled, cayley dashed hollow, splitting solid
+/// hollow, kinetic–kick dashed filled).
 pub fn style_of(m: &MethodSpec) -> SeriesStyle {
     let second =
         m.tau == Some(TauKind::Cayley) || matches!(m.method, Method::KineticKick | Method::Rkmk4);
-    let marker = if let Some(c) = &m.composition {
+    if let Some(p) = &m.processing {
+        // Processed: the marker by scheme; LP τ = exp solid filled, τ = cayley dashed hollow,
+        // splitting solid hollow, kinetic–kick dashed filled.
+        let marker = match p.name() {
+            "blanes-6" => Marker::Circle,
+            "blanes-casas-murua-6-11" => Marker::Triangle,
+            _ => Marker::Square,
+        };
+        let (dashed, filled) = match (m.method, m.tau) {
+            (Method::Splitting, _) => (false, false),
+            (Method::KineticKick, _) => (true, true),
+            (_, Some(TauKind::Cayley)) => (true, false),
+            _ => (false, true),
+        };
+        return SeriesStyle {
+            color: family(m).1,
+            dashed,
+            marker,
+            filled,
+        };
+    }
+    let marker = if let Some(order) = m.modified {
+        match (m.theta, order) {
+            (Some(0.0), 4) => Marker::Triangle,
+            (Some(0.0), _) => Marker::Diamond,
+            (_, 4) => Marker::Circle,
+            _ => Marker::Square,
+        }
+    } else if let Some(c) = &m.composition {
         match c.name() {
             "triple-jump-4" => Marker::Triangle,
             "mclachlan-4" => Marker::Cross,
@@ -747,7 +841,7 @@ pub fn write_outputs(
     let curves: Vec<Curve> = by_method(&report.rows)
         .into_iter()
         .map(|(m, rows)| Curve {
-            label: m.to_string(),
+            label: curve_label(&m, rows.iter().find_map(|r| r.info)),
             style: style_of(&m),
             points: rows
                 .iter()
@@ -832,6 +926,7 @@ mod tests {
             max_casimir_error: None,
             max_momentum_map_error: None,
             failure: None,
+            info: None,
         }
     }
 
@@ -863,9 +958,24 @@ mod tests {
     #[test]
     fn candidates_cover_every_lie_method_tau_theta_the_compositions_the_splittings_and_the_baselines(
     ) {
-        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + modified LP × 2 τ + splitting (plain,
+        // 3 methods × 2 τ × 3 θ + 3 compositions × 2 τ + modified LP × (2 θ × 2 orders) × 2 τ
+        // + 3 processing schemes × (LP × 2 τ, splitting, kinetic-kick) + splitting (plain,
         // 3 compositions) + kinetic-kick × 3 schemes + exact + rk4 + rkmk4.
-        assert_eq!(candidates().len(), 36);
+        assert_eq!(candidates().len(), 54);
+        let processed: Vec<_> = candidates()
+            .into_iter()
+            .filter(|m| m.processing.is_some())
+            .collect();
+        assert_eq!(processed.len(), 12);
+        assert!(processed.iter().all(|m| m.composition.is_none()
+            && m.modified.is_none()
+            && ((m.method == Method::LiePoisson && m.theta == Some(0.5))
+                || matches!(m.method, Method::Splitting | Method::KineticKick))));
+        let modified: Vec<_> = candidates()
+            .into_iter()
+            .filter_map(|m| Some((m.theta?, m.modified?, m.tau?)))
+            .collect();
+        assert_eq!(modified.len(), 8);
         let composed: Vec<_> = candidates()
             .into_iter()
             .filter(|m| m.composition.is_some())
@@ -877,7 +987,7 @@ mod tests {
                 || m.method == Method::Splitting));
         let kicks: Vec<_> = candidates()
             .into_iter()
-            .filter(|m| m.method == Method::KineticKick)
+            .filter(|m| m.method == Method::KineticKick && m.processing.is_none())
             .map(|m| m.splitting.unwrap().order())
             .collect();
         assert_eq!(kicks, [2, 4, 6]);
@@ -918,7 +1028,7 @@ mod tests {
         let mut distinct = families.clone();
         distinct.sort();
         distinct.dedup();
-        assert_eq!(distinct.len(), 8);
+        assert_eq!(distinct.len(), 9);
         for (m, f) in candidates().iter().zip(&families) {
             for (n, g) in candidates().iter().zip(&families) {
                 assert_eq!(f == g, family(m).1 == family(n).1, "{m} {n}");

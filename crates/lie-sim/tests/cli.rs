@@ -263,12 +263,17 @@ fn trade_writes_a_work_precision_table_and_plot() {
          reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,failure"
     );
     // (lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, 3 compositions × 2 τ, modified
-    // lie-poisson × 2 τ, splitting and its 3 compositions, kinetic-kick × 3 coefficient sets, rk4,
+    // lie-poisson × 2 θ × 2 orders × 2 τ, 3 processing schemes × (lie-poisson × 2 τ, splitting,
+    // kinetic-kick), splitting and its 3 compositions, kinetic-kick × 3 coefficient sets, rk4,
     // rkmk4) × 2 steps, and the exact flow in one step and at the 2 steps.
     let rows: Vec<&str> = lines.collect();
-    assert_eq!(rows.len(), 73, "{text}");
+    assert_eq!(rows.len(), 109, "{text}");
     for (prefix, n) in [
-        ("modified-lie-poisson,cayley,0.5,-,", 2),
+        ("modified-lie-poisson,cayley,0.5,order-4,", 2),
+        ("modified-lie-poisson,exp,0,order-6,", 2),
+        ("processed-lie-poisson,exp,0.5,blanes-casas-murua-6-11,", 2),
+        ("processed-splitting,-,-,blanes-6,", 2),
+        ("processed-kinetic-kick,-,-,blanes-casas-murua-6-13,", 2),
         ("splitting,-,-,-,", 2),
         ("splitting,-,-,kahan-li-6,", 2),
         ("kinetic-kick,-,-,blanes-moan-6,", 2),
@@ -1040,6 +1045,50 @@ fn sweep_writes_one_row_per_member() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The sweep of a processed (and of a modified) method: on one thread and on two byte for byte,
+/// every member completed — the ensemble reads each member's processed state like any observer.
+#[test]
+fn sweeps_of_processed_and_modified_methods_run_and_are_thread_independent() {
+    let dir = temp_dir("sweep-new");
+    let base = std::fs::read_to_string(scenes_dir().join("sweep.toml")).unwrap();
+    for (name, key) in [
+        ("processed", "processing = \"blanes-casas-murua-6-11\""),
+        ("modified", "modified = true\norder = 6"),
+    ] {
+        std::fs::write(
+            dir.join(format!("{name}.toml")),
+            base.replace("[integrator]", &format!("[integrator]\n{key}")),
+        )
+        .unwrap();
+        for threads in ["1", "2"] {
+            let o = lie_sim(
+                &[
+                    "sweep",
+                    &format!("{name}.toml"),
+                    "--out",
+                    &format!("{name}-{threads}.csv"),
+                    "--count",
+                    "12",
+                    "--duration",
+                    "0.5",
+                    "--threads",
+                    threads,
+                ],
+                &dir,
+            );
+            assert!(o.status.success(), "{name}: {}", stderr(&o));
+        }
+        let one = std::fs::read_to_string(dir.join(format!("{name}-1.csv"))).unwrap();
+        assert_eq!(
+            one,
+            std::fs::read_to_string(dir.join(format!("{name}-2.csv"))).unwrap(),
+            "{name}"
+        );
+        assert_eq!(one.matches("completed").count(), 12, "{name}: {one}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// Shards 0/3, 1/3, 2/3 merged (in any order) are the unsharded sweep byte for byte, and the
 /// sweep on one thread is the sweep on two byte for byte.
 #[test]
@@ -1123,9 +1172,10 @@ fn shard_index_out_of_range_is_a_usage_error() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// `modified = true`: Lie–Poisson θ = ½ on the modified Hamiltonian, order 4 on the free body —
-/// at the same step it lands far closer to the exact flow than the plain θ = ½ step; refused off
-/// the free body, with θ ≠ ½ or with a composition, naming the field.
+/// `modified = true`: Lie–Poisson θ = ½ or 0 on the modified Hamiltonian, order 4 (`order = 6`:
+/// 6) on the free body — at the same step it lands far closer to the exact flow than the plain
+/// θ = ½ step, and order 6 closer still; refused off the free body, with θ ∉ {½, 0}, with a
+/// composition, and `order` without `modified` or other than 4 and 6, naming the field.
 #[test]
 fn modified_lie_poisson_runs_on_the_free_body_and_is_refused_elsewhere() {
     let exact = GOOD
@@ -1138,6 +1188,17 @@ fn modified_lie_poisson_runs_on_the_free_body_and_is_refused_elsewhere() {
         &GOOD.replace("[integrator]", "[integrator]\nmodified = true"),
     );
     assert!(summary.contains("order 4"), "{summary}");
+    let (m6, summary6) = run_text(
+        "mod6",
+        &GOOD.replace("[integrator]", "[integrator]\nmodified = true\norder = 6"),
+    );
+    assert!(summary6.contains("order 6"), "{summary6}");
+    let (m0, _) = run_text(
+        "mod0",
+        &GOOD
+            .replace("theta = 0.5", "theta = 0.0")
+            .replace("[integrator]", "[integrator]\nmodified = true"),
+    );
     let (p, _) = run_text("mod-plain", GOOD);
     let last = |c: &Csv| c.rows[c.rows.len() - 1].clone();
     let d = |a: &[f64], b: &[f64]| {
@@ -1145,17 +1206,100 @@ fn modified_lie_poisson_runs_on_the_free_body_and_is_refused_elsewhere() {
             .zip(b)
             .fold(0.0f64, |x, (u, v)| x.max((u - v).abs()))
     };
-    let (dm, dp) = (d(&last(&m), &last(&e)), d(&last(&p), &last(&e)));
+    let (dm, dm6, dm0, dp) = (
+        d(&last(&m), &last(&e)),
+        d(&last(&m6), &last(&e)),
+        d(&last(&m0), &last(&e)),
+        d(&last(&p), &last(&e)),
+    );
     assert!(dm < 0.05 * dp, "modified {dm:e}, plain {dp:e}");
+    assert!(dm0 < 0.05 * dp, "modified θ = 0 {dm0:e}, plain {dp:e}");
+    assert!(dm6 < 0.05 * dm, "order 6 {dm6:e}, order 4 {dm:e}");
     assert!(m.max_relative_drift("casimir") < 1e-14);
     let top = std::fs::read_to_string(scenes_dir().join("heavy-top.toml"))
         .unwrap()
         .replace("[integrator]", "[integrator]\nmodified = true");
     assert_rejected("mod-top", &top, &["integrator.method", "free rigid body"]);
-    let theta0 = GOOD
-        .replace("theta = 0.5", "theta = 0.0")
+    let theta1 = GOOD
+        .replace("theta = 0.5", "theta = 1.0")
         .replace("[integrator]", "[integrator]\nmodified = true");
-    assert_rejected("mod-theta", &theta0, &["integrator.modified", "θ = 0.5"]);
+    assert_rejected(
+        "mod-theta",
+        &theta1,
+        &["integrator.modified", "θ = 0.5 or 0", "θ = 1"],
+    );
+    let order5 = GOOD.replace("[integrator]", "[integrator]\nmodified = true\norder = 5");
+    assert_rejected("mod-order", &order5, &["integrator.order", "4 and 6", "5"]);
+    let lone = GOOD.replace("[integrator]", "[integrator]\norder = 6");
+    assert_rejected(
+        "mod-lone-order",
+        &lone,
+        &["integrator.order", "modified = true"],
+    );
+}
+
+/// `processing = …`: the processed method of a symmetric base (here θ = ½ Lie–Poisson and the
+/// Strang splitting) runs, says so in the summary, and at the same step lands far closer to the
+/// exact flow than its base (effective order 6); refused with a non-symmetric base, with a
+/// composition, with `modified`, and by an unknown name (listing the known ones).
+#[test]
+fn processing_runs_on_symmetric_bases_and_is_refused_elsewhere() {
+    let exact = GOOD
+        .replace("\"lie-poisson\"", "\"exact\"")
+        .replace("tau = \"cayley\"\n", "")
+        .replace("theta = 0.5\n", "");
+    let (e, _) = run_text("proc-exact", &exact);
+    let processed = GOOD.replace(
+        "[integrator]",
+        "[integrator]\nprocessing = \"blanes-casas-murua-6-11\"",
+    );
+    let (q, summary) = run_text("proc", &processed);
+    assert!(summary.contains("effective order 6"), "{summary}");
+    let (p, _) = run_text("proc-plain", GOOD);
+    let splitting = GOOD
+        .replace("\"lie-poisson\"", "\"splitting\"")
+        .replace("tau = \"cayley\"\n", "")
+        .replace("theta = 0.5\n", "");
+    let (s, _) = run_text("proc-strang-plain", &splitting);
+    let (sq, _) = run_text(
+        "proc-strang",
+        &splitting.replace("[integrator]", "[integrator]\nprocessing = \"blanes-6\""),
+    );
+    let last = |c: &Csv| c.rows[c.rows.len() - 1].clone();
+    let d = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .fold(0.0f64, |x, (u, v)| x.max((u - v).abs()))
+    };
+    let (dq, dp) = (d(&last(&q), &last(&e)), d(&last(&p), &last(&e)));
+    assert!(dq < 1e-3 * dp, "processed {dq:e}, plain {dp:e}");
+    let (dsq, ds) = (d(&last(&sq), &last(&e)), d(&last(&s), &last(&e)));
+    assert!(dsq < 1e-3 * ds, "processed Strang {dsq:e}, plain {ds:e}");
+    assert!(q.max_relative_drift("casimir") < 1e-14);
+    assert_rejected(
+        "proc-theta",
+        &processed.replace("theta = 0.5", "theta = 0.0"),
+        &["integrator.processing", "symmetric base", "θ = 0"],
+    );
+    assert_rejected(
+        "proc-comp",
+        &processed.replace("[integrator]", "[integrator]\ncomposition = \"kahan-li-6\""),
+        &["integrator.processing", "composition"],
+    );
+    assert_rejected(
+        "proc-mod",
+        &processed.replace("[integrator]", "[integrator]\nmodified = true"),
+        &["integrator.processing", "modified"],
+    );
+    assert_rejected(
+        "proc-name",
+        &GOOD.replace("[integrator]", "[integrator]\nprocessing = \"kahan-li-6\""),
+        &[
+            "integrator.processing",
+            "unknown processing scheme",
+            "blanes-casas-murua-6-11",
+        ],
+    );
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,56 +1,82 @@
-//! The θ = ½ Lie–Poisson scheme on the modified Hamiltonian of the free rigid body: order 4.
+//! The Lie–Poisson scheme on the modified Hamiltonian of the free rigid body: order 4 or 6 at the
+//! cost of one order-2 step.
 
-use super::{ModifiedRigidBody, ModifiedTau};
+use super::{ModifiedRigidBody, ModifiedScheme, ModifiedTau};
 use crate::compose::{StateSnapshot, SymmetricMethod};
 use crate::systems::RigidBody;
 use crate::{Integrator, IntegratorError, LiePoisson, MethodInfo, SolverConfig, System};
 use lie_groups::So3;
 use nalgebra::Vector3;
 
-/// The θ = ½ Lie–Poisson scheme (eq. 19, [`LiePoisson`]) applied, at each step h, to the modified
-/// Hamiltonian `H̃_h = H − h² H₂` of [`ModifiedRigidBody`]: order 4 for the free rigid body at
-/// the cost of one order-2 step (the Newton iteration sees a slightly different Hessian).
+/// The Lie–Poisson scheme (eq. 19, [`LiePoisson`]) with θ = ½ or θ = 0 applied, at each step h,
+/// to the modified Hamiltonian `H̃_h = H − h² H₂ [− h⁴ H₄]` of [`ModifiedRigidBody`]: order 4 or 6
+/// ([`ModifiedScheme`]) for the free rigid body at the cost of one order-2 step (the Newton
+/// iteration sees a slightly different Hessian).
 ///
-/// - symmetric (H̃_{−h} = H̃_h and the kernel is symmetric), implicit, a Poisson map;
+/// - symmetric (H̃_{−h} = H̃_h, and the kernel is symmetric: θ = ½, or θ = 0 without a potential,
+///   where it coincides with its adjoint θ = 1), implicit, a Poisson map;
 /// - |Π|² and the spatial momentum RΠ conserved to round-off (H̃ is left-invariant);
-/// - the energy H (reported by [`Integrator::energy`], not H̃) bounded with no drift: H̃_h + O(h⁴)
-///   is conserved, H = H̃_h + h²H₂.
+/// - the energy H (reported by [`Integrator::energy`], not H̃) bounded with no drift: the
+///   modified Hamiltonian of the step, H + O(hᵖ), is conserved to O(hᵖ) exponentially long.
 ///
 /// The kernel is rebuilt (a copy of the body, no allocation) only when h changes. Errors as
 /// [`LiePoisson`]: a non-finite h, a step beyond τ's domain or without Newton convergence leave
 /// the state untouched.
 ///
 /// ```
-/// use integrators::{modified::ModifiedLiePoisson, Integrator, systems::RigidBody};
+/// use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
+/// use integrators::{Integrator, systems::RigidBody};
 /// use lie_groups::{Cayley, LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
 /// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
 /// let pi0 = Vector3::new(0.5, 1.0, 0.2);
-/// let mut m = ModifiedLiePoisson::<Cayley>::new(body, pi0, Some(So3::identity()))?;
+/// // Order 6 from the cheaper θ = 0 step.
+/// let scheme = ModifiedScheme::new(0.0, 6)?;
+/// let mut m = ModifiedLiePoisson::<Cayley>::with_scheme(body, scheme, pi0, Some(So3::identity()))?;
 /// for _ in 0..100 {
 ///     m.step(0.1)?;
 /// }
-/// assert_eq!(m.info().order, 4);
+/// assert_eq!(m.info().order, 6);
 /// assert!((m.casimir().unwrap() - pi0.norm_squared()).abs() < 1e-14);
 /// # Ok::<(), integrators::IntegratorError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct ModifiedLiePoisson<T: ModifiedTau> {
     body: RigidBody,
+    scheme: ModifiedScheme,
     kernel: LiePoisson<So3, T, ModifiedRigidBody<T>>,
 }
 
 impl<T: ModifiedTau> ModifiedLiePoisson<T> {
-    /// The integrator at t = 0 from Π₀ and optionally R₀. Errors: non-finite Π₀ or R₀.
+    /// The θ = ½, order-4 integrator at t = 0 from Π₀ and optionally R₀. Errors: non-finite Π₀
+    /// or R₀.
     pub fn new(
         body: RigidBody,
         pi0: Vector3<f64>,
         r0: Option<So3>,
     ) -> Result<Self, IntegratorError> {
-        let modified = ModifiedRigidBody::new(body.clone(), 0.0)?;
-        let kernel = LiePoisson::new(modified, 0.5, pi0, r0)?;
-        Ok(Self { body, kernel })
+        Self::with_scheme(body, ModifiedScheme::default(), pi0, r0)
+    }
+    /// The integrator of `scheme` (θ ∈ {½, 0}, order ∈ {4, 6}) at t = 0 from Π₀ and optionally
+    /// R₀. Errors: non-finite Π₀ or R₀.
+    pub fn with_scheme(
+        body: RigidBody,
+        scheme: ModifiedScheme,
+        pi0: Vector3<f64>,
+        r0: Option<So3>,
+    ) -> Result<Self, IntegratorError> {
+        let modified = ModifiedRigidBody::new(body.clone(), scheme, 0.0)?;
+        let kernel = LiePoisson::new(modified, scheme.theta(), pi0, r0)?;
+        Ok(Self {
+            body,
+            scheme,
+            kernel,
+        })
+    }
+    /// The θ and order.
+    pub fn scheme(&self) -> ModifiedScheme {
+        self.scheme
     }
     /// Replaces the kernel's solver configuration.
     pub fn with_solver(mut self, config: SolverConfig) -> Self {
@@ -70,7 +96,7 @@ impl<T: ModifiedTau> ModifiedLiePoisson<T> {
     pub fn body(&self) -> &RigidBody {
         &self.body
     }
-    /// The kernel: θ = ½ Lie–Poisson on the Hamiltonian modified for the last step size.
+    /// The kernel: Lie–Poisson on the Hamiltonian modified for the last step size.
     pub fn kernel(&self) -> &LiePoisson<So3, T, ModifiedRigidBody<T>> {
         &self.kernel
     }
@@ -85,9 +111,9 @@ impl<T: ModifiedTau> Integrator for ModifiedLiePoisson<T> {
         }
         if self.kernel.system().step_size() != h {
             let (t, pi, r) = self.kernel.snapshot();
-            let modified = ModifiedRigidBody::new(self.body.clone(), h)?;
-            let mut kernel =
-                LiePoisson::new(modified, 0.5, pi, r)?.with_solver(*self.kernel.solver());
+            let modified = ModifiedRigidBody::new(self.body.clone(), self.scheme, h)?;
+            let mut kernel = LiePoisson::new(modified, self.scheme.theta(), pi, r)?
+                .with_solver(*self.kernel.solver());
             kernel.set_time(t)?;
             self.kernel = kernel;
         }
@@ -123,14 +149,17 @@ impl<T: ModifiedTau> Integrator for ModifiedLiePoisson<T> {
     }
     fn method_name(&self) -> String {
         format!(
-            "modified-lie-poisson(order=4, tau={}, theta=0.5)",
-            <T as lie_groups::Tau<So3>>::NAME
+            "modified-lie-poisson(order={}, tau={}, theta={})",
+            self.scheme.order(),
+            <T as lie_groups::Tau<So3>>::NAME,
+            self.scheme.theta()
         )
     }
-    /// Order 4, symmetric, implicit, Poisson, Casimirs and momentum map kept, on the group.
+    /// The scheme's order (4 or 6), symmetric, implicit, Poisson, Casimirs and momentum map kept,
+    /// on the group.
     fn info(&self) -> MethodInfo {
         MethodInfo {
-            order: 4,
+            order: self.scheme.order(),
             symmetric: true,
             explicit: false,
             poisson: true,
@@ -143,7 +172,8 @@ impl<T: ModifiedTau> Integrator for ModifiedLiePoisson<T> {
 }
 
 impl<T: ModifiedTau> SymmetricMethod for ModifiedLiePoisson<T> {
-    /// Always: the kernel is θ = ½ and H̃ depends on h².
+    /// Always: H̃ depends on h², and the kernel is θ = ½, or θ = 0 without a potential (which
+    /// coincides with its adjoint θ = 1).
     fn is_symmetric(&self) -> bool {
         true
     }

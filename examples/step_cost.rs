@@ -1,0 +1,184 @@
+//! Steps one method of the trade tables n times: the driver for load-independent per-step costs
+//! (instruction counts) when the machine is shared and wall-clock figures are not to be trusted.
+//!
+//! ```text
+//! cargo build --release -p lie-integrators --example step_cost
+//! for n in 20000 40000; do
+//!   valgrind --tool=callgrind --callgrind-out-file=/tmp/cg.$n \
+//!     target/release/examples/step_cost free/processed/blanes-casas-murua-6-11 $n
+//! done
+//! # instructions per step = (Ir(40000) − Ir(20000)) / 20000, Ir from the "summary:" line
+//! ```
+//!
+//! The systems and steps are those of `benches/splitting.rs` (free body 𝕀 = diag(1, 2, 3),
+//! Π₀ = (0.5, 1, 0.2); heavy top mgχ = (0, 0.1, 0.5); h = 0.01; R reconstructed). Methods:
+//! `<free|top>/rk4-hand`, `…/rk4`, `…/rkmk4`, `…/strang`, `…/lp-cayley-0.5`, `…/lp-cayley-0`,
+//! `free/modified/<exp|cayley>/<0.5|0>/<4|6>`, `…/processed/<scheme>` (steps only) and
+//! `…/processed-read/<scheme>` (a step and a read, which applies the processor),
+//! `top/kinetic-kick/<strang|blanes-moan-4|blanes-moan-6>`, `top/processed-kk/<scheme>`.
+
+#[path = "../benches/common/hand_rk4.rs"]
+mod hand_rk4;
+
+use hand_rk4::HandRk4;
+use integrators::baselines::{QuaternionRk4, Rkmk4};
+use integrators::exact::FreeBodyFlow;
+use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
+use integrators::processing::{Processed, ProcessingScheme};
+use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
+use integrators::systems::{HeavyTop, RigidBody};
+use integrators::{Integrator, IntegratorError, LiePoisson, System};
+use lie_groups::{Cayley, ExpMap, LieGroup, So3};
+use nalgebra::Vector3;
+use std::hint::black_box;
+
+const H: f64 = 0.01;
+
+fn g0() -> So3 {
+    So3::exp(&Vector3::new(0.3, -0.5, 0.8))
+}
+
+fn steps<I: Integrator<Group = So3>>(
+    mut i: I,
+    n: usize,
+    read: bool,
+) -> Result<f64, IntegratorError> {
+    let mut acc = 0.0;
+    for _ in 0..n {
+        i.step(black_box(H))?;
+        if read {
+            acc += i.momentum()[0];
+        }
+    }
+    Ok(acc + i.momentum()[0])
+}
+
+fn run<S: System<So3> + Clone + integrators::splitting::SplitSystem<So3>>(
+    system: S,
+    flow: FreeBodyFlow,
+    mgchi: Vector3<f64>,
+    method: &str,
+    n: usize,
+) -> Result<f64, IntegratorError> {
+    let pi0 = Vector3::new(0.5, 1.0, 0.2);
+    let g = Some(g0());
+    let parts: Vec<&str> = method.split('/').collect();
+    let scheme = |name: &str| name.parse::<ProcessingScheme>();
+    match parts.as_slice() {
+        ["rk4-hand"] => {
+            let r = nalgebra::Rotation3::from_matrix_unchecked(*g0().as_matrix());
+            let q = nalgebra::UnitQuaternion::from_rotation_matrix(&r).into_inner();
+            let inv_i = Vector3::new(1.0, 0.5, 1.0 / 3.0);
+            // As in the bench: the free body's hand-written step has no gravity code at all.
+            if mgchi == Vector3::zeros() {
+                let mut hand = HandRk4::<false> {
+                    inv_i,
+                    mgchi,
+                    q,
+                    pi: pi0,
+                };
+                for _ in 0..n {
+                    hand.step(black_box(H));
+                }
+                Ok(hand.pi[0])
+            } else {
+                let mut hand = HandRk4::<true> {
+                    inv_i,
+                    mgchi,
+                    q,
+                    pi: pi0,
+                };
+                for _ in 0..n {
+                    hand.step(black_box(H));
+                }
+                Ok(hand.pi[0])
+            }
+        }
+        ["rk4"] => steps(QuaternionRk4::new(system, pi0, g)?, n, false),
+        ["rkmk4"] => steps(Rkmk4::new(system, pi0, g)?, n, false),
+        ["strang"] => steps(Splitting::new(system, pi0, g)?, n, false),
+        ["lp-cayley-0.5"] => steps(
+            LiePoisson::<So3, Cayley, _>::new(system, 0.5, pi0, g)?,
+            n,
+            false,
+        ),
+        ["lp-cayley-0"] => steps(
+            LiePoisson::<So3, Cayley, _>::new(system, 0.0, pi0, g)?,
+            n,
+            false,
+        ),
+        ["processed", name] => steps(
+            Processed::composition(Splitting::new(system, pi0, g)?, scheme(name)?)?,
+            n,
+            false,
+        ),
+        ["processed-read", name] => steps(
+            Processed::composition(Splitting::new(system, pi0, g)?, scheme(name)?)?,
+            n,
+            true,
+        ),
+        ["kinetic-kick", name] => steps(
+            KineticKick::new(system, flow, SplittingScheme::by_name(name)?, pi0, g)?,
+            n,
+            false,
+        ),
+        ["processed-kk", name] => steps(
+            Processed::composition(
+                KineticKick::new(system, flow, SplittingScheme::strang(), pi0, g)?,
+                scheme(name)?,
+            )?,
+            n,
+            false,
+        ),
+        _ => Err(IntegratorError::InvalidParameter {
+            reason: format!("unknown method {method:?} (see the example's doc comment)"),
+        }),
+    }
+}
+
+fn main() -> Result<(), IntegratorError> {
+    let args: Vec<String> = std::env::args().collect();
+    let (Some(method), Some(n)) = (args.get(1), args.get(2).and_then(|s| s.parse().ok())) else {
+        eprintln!("usage: step_cost <free|top>/<method> <steps>");
+        std::process::exit(2);
+    };
+    let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+    let x = if let Some(m) = method.strip_prefix("free/modified/") {
+        let p: Vec<&str> = m.split('/').collect();
+        let [tau, theta, order] = p.as_slice() else {
+            eprintln!("free/modified/<exp|cayley>/<0.5|0>/<4|6>");
+            std::process::exit(2);
+        };
+        let scheme = ModifiedScheme::new(
+            theta.parse().unwrap_or(f64::NAN),
+            order.parse().unwrap_or(0),
+        )?;
+        let pi0 = Vector3::new(0.5, 1.0, 0.2);
+        if *tau == "exp" {
+            steps(
+                ModifiedLiePoisson::<ExpMap>::with_scheme(body, scheme, pi0, Some(g0()))?,
+                n,
+                false,
+            )?
+        } else {
+            steps(
+                ModifiedLiePoisson::<Cayley>::with_scheme(body, scheme, pi0, Some(g0()))?,
+                n,
+                false,
+            )?
+        }
+    } else if let Some(m) = method.strip_prefix("free/") {
+        let flow = FreeBodyFlow::new(&body);
+        run(body, flow, Vector3::zeros(), m, n)?
+    } else if let Some(m) = method.strip_prefix("top/") {
+        let mgchi = Vector3::new(0.0, 0.1, 0.5);
+        let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 1.0, mgchi)?;
+        let flow = FreeBodyFlow::new(top.body());
+        run(top, flow, mgchi, m, n)?
+    } else {
+        eprintln!("usage: step_cost <free|top>/<method> <steps>");
+        std::process::exit(2);
+    };
+    println!("{x}");
+    Ok(())
+}
