@@ -93,6 +93,7 @@
 #![warn(missing_docs)]
 
 pub mod baselines;
+mod carried_state;
 mod compensated;
 pub mod compose;
 pub mod dense_output;

@@ -17,6 +17,7 @@
 //! h halves, see docs/work-precision.md), the price of its order 4 and its low cost. Stack only,
 //! no heap allocation per step.
 
+use crate::carried_state;
 use crate::lie_poisson::check_state;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
@@ -163,10 +164,14 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
         if !h.is_finite() {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
-        let pi = self.pi;
+        // Π and q as the last step stored them, entry by entry (crate::carried_state).
+        let pi = carried_state::read(&self.pi);
         let half = 0.5 * h;
         let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
-        match self.q {
+        match self
+            .q
+            .map(|q| Quaternion::from(carried_state::read(&q.coords)))
+        {
             None => {
                 let pi1 = self.momentum_step(h);
                 if !Vector::is_finite(&pi1) {

@@ -29,6 +29,7 @@
 //! evaluated except the final one; without reconstruction only μ is integrated (then the method
 //! is plain RK4 on μ). For fixed-size groups every quantity lives on the stack.
 
+use crate::carried_state;
 use crate::lie_poisson::check_state;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
@@ -109,7 +110,8 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
         }
         let half = 0.5 * h;
         let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
-        let mu = &self.mu;
+        // μ as the last step stored it, entry by entry (crate::carried_state).
+        let mu = &carried_state::read(&self.mu);
         let Some(gk) = self.g.as_ref() else {
             // μ alone: plain RK4 on μ̇ = ad*_ξ μ (no potential, checked at construction).
             let (_, l1) = self.rates(t0, None, mu);

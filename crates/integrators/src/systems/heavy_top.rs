@@ -144,6 +144,7 @@ impl HeavyTop {
         &self.chi
     }
     /// The vertical in the body frame, `Γ = Rᵀ e₃`.
+    #[inline]
     pub fn vertical_in_body(r: &So3) -> Vector3<f64> {
         let m = r.as_matrix();
         Vector3::new(m[(2, 0)], m[(2, 1)], m[(2, 2)])
@@ -161,29 +162,36 @@ impl HeavyTop {
 
 impl System<So3> for HeavyTop {
     /// `h(Π) = ½ Π·𝕀⁻¹Π`.
+    #[inline]
     fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
         self.body.hamiltonian(mu)
     }
     /// Ω = 𝕀⁻¹Π.
+    #[inline]
     fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
         self.body.velocity(mu)
     }
     /// 𝕀⁻¹.
+    #[inline]
     fn hessian(&self, mu: &Vector3<f64>) -> Matrix3<f64> {
         self.body.hessian(mu)
     }
     /// Π = 𝕀Ω.
+    #[inline]
     fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {
         self.body.momentum(xi)
     }
+    #[inline]
     fn has_potential(&self) -> bool {
         true
     }
     /// `V(R) = m g ⟨R χ, e₃⟩ = m g χ·Γ`.
+    #[inline]
     fn potential(&self, g: &So3) -> f64 {
         self.mgchi.dot(&Self::vertical_in_body(g))
     }
     /// `T*_e L_R dV = m g χ × Γ` (derivation on the module page).
+    #[inline]
     fn potential_differential(&self, g: &So3) -> Vector3<f64> {
         self.mgchi.cross(&Self::vertical_in_body(g))
     }
@@ -192,6 +200,7 @@ impl System<So3> for HeavyTop {
 /// The kinetic pieces of the body's splitting ([`RigidBody`]'s principal-axis rotations); the
 /// gravity potential is the kick.
 impl SplitSystem<So3> for HeavyTop {
+    #[inline]
     fn pieces(&self) -> usize {
         3
     }

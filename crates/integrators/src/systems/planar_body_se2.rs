@@ -137,14 +137,17 @@ impl PlanarBody {
 
 impl System<Se2> for PlanarBody {
     /// `h(L, P) = L²/(2J) + |P|²/(2m)`.
+    #[inline]
     fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
         0.5 * mu.x * mu.x / self.inertia + 0.5 * (mu.y * mu.y + mu.z * mu.z) / self.mass
     }
     /// `(ω, v) = (L/J, P/m)`.
+    #[inline]
     fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
         Vector3::new(mu.x / self.inertia, mu.y / self.mass, mu.z / self.mass)
     }
     /// `diag(1/J, 1/m, 1/m)`.
+    #[inline]
     fn hessian(&self, _mu: &Vector3<f64>) -> Matrix3<f64> {
         Matrix3::from_diagonal(&Vector3::new(
             1.0 / self.inertia,
@@ -153,18 +156,22 @@ impl System<Se2> for PlanarBody {
         ))
     }
     /// `(L, P) = (J ω, m v)`.
+    #[inline]
     fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {
         Vector3::new(xi.x * self.inertia, xi.y * self.mass, xi.z * self.mass)
     }
+    #[inline]
     fn has_potential(&self) -> bool {
         self.stiffness != 0.0 || self.gravity != Vector2::zeros()
     }
     /// `V = ½ k |x + R c|² − m ⟨γ, x⟩`.
+    #[inline]
     fn potential(&self, g: &Se2) -> f64 {
         let s = self.spring_body(g);
         0.5 * self.stiffness * s.norm_squared() - self.mass * self.gravity.dot(&g.translation())
     }
     /// `T*_e L_g dV = (k c × s, k s − m Rᵀγ)`, s = Rᵀx + c (derivation on the module page).
+    #[inline]
     fn potential_differential(&self, g: &Se2) -> Vector3<f64> {
         let s = self.spring_body(g);
         let lin = s * self.stiffness - g.rotation().inverse().rotate(&self.gravity) * self.mass;
@@ -175,9 +182,11 @@ impl System<Se2> for PlanarBody {
 /// Two pieces: the rotation `ξ₁ = (L/J, 0, 0)` (it turns P, never L) and the translation
 /// `ξ₂ = (0, P/m)` (it changes L by the moment of P, never P); the potential is the kick.
 impl SplitSystem<Se2> for PlanarBody {
+    #[inline]
     fn pieces(&self) -> usize {
         2
     }
+    #[inline]
     fn piece_velocity(&self, i: usize, mu: &Vector3<f64>) -> Vector3<f64> {
         if i == 0 {
             Vector3::new(mu.x / self.inertia, 0.0, 0.0)

@@ -128,19 +128,23 @@ impl System<Se3> for Quadrotor {
     fn momentum(&self, xi: &Vector6<f64>) -> Vector6<f64> {
         self.body.momentum(xi)
     }
+    #[inline]
     fn has_potential(&self) -> bool {
         self.weight != 0.0
     }
     /// `V = m g x₃`.
+    #[inline]
     fn potential(&self, g: &Se3) -> f64 {
         self.weight * g.translation().z
     }
     /// `(0, m g Γ)`.
+    #[inline]
     fn potential_differential(&self, g: &Se3) -> Vector6<f64> {
         let f = Self::up(g) * self.weight;
         Vector6::new(0.0, 0.0, 0.0, f.x, f.y, f.z)
     }
     /// `[[0, 0], [−m g Γ̂, 0]]`.
+    #[inline]
     fn force_derivative(&self, g: &Se3) -> Matrix6<f64> {
         let mut k = Matrix6::zeros();
         k.fixed_view_mut::<3, 3>(3, 0)
@@ -152,12 +156,15 @@ impl System<Se3> for Quadrotor {
 /// The free body's pieces (rotations about the principal axes, translation); gravity and the
 /// inputs are kicks.
 impl SplitSystem<Se3> for Quadrotor {
+    #[inline]
     fn pieces(&self) -> usize {
         self.body.pieces()
     }
+    #[inline]
     fn piece_velocity(&self, i: usize, mu: &Vector6<f64>) -> Vector6<f64> {
         self.body.piece_velocity(i, mu)
     }
+    #[inline]
     fn piece_flow(&self, i: usize, t: f64, mu: &mut Vector6<f64>, g: Option<&mut Se3>) {
         self.body.piece_flow(i, t, mu, g)
     }

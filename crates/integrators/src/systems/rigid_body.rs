@@ -108,6 +108,7 @@ impl System<So3> for RigidBody {
         self.inner.momentum(xi)
     }
     /// `|Π|²`.
+    #[inline]
     fn casimir(&self, mu: &Vector3<f64>) -> Option<f64> {
         Some(mu.norm_squared())
     }
@@ -117,6 +118,7 @@ impl System<So3> for RigidBody {
 /// by the angle `−tωᵢ` and R by `+tωᵢ` (`ξᵢ = ωᵢ aᵢ`, `ωᵢ = aᵢ·Π/Iᵢ`, constant along the piece's
 /// flow because the rotation fixes aᵢ·Π).
 impl SplitSystem<So3> for RigidBody {
+    #[inline]
     fn pieces(&self) -> usize {
         3
     }

@@ -154,16 +154,19 @@ impl RigidBodySe3 {
 
 impl System<Se3> for RigidBodySe3 {
     /// `h(Π, P) = ½ Π·𝕀⁻¹Π + ½ |P|²/m`.
+    #[inline]
     fn hamiltonian(&self, mu: &Vector6<f64>) -> f64 {
         let (pi, p) = split(mu);
         self.body.hamiltonian(&pi) + 0.5 * p.norm_squared() / self.mass
     }
     /// `(Ω, v) = (𝕀⁻¹Π, P/m)`.
+    #[inline]
     fn velocity(&self, mu: &Vector6<f64>) -> Vector6<f64> {
         let (pi, p) = split(mu);
         join(&self.body.velocity(&pi), &(p / self.mass))
     }
     /// `diag(𝕀⁻¹, I₃/m)`.
+    #[inline]
     fn hessian(&self, _mu: &Vector6<f64>) -> Matrix6<f64> {
         let mut m = Matrix6::zeros();
         m.fixed_view_mut::<3, 3>(0, 0)
@@ -173,14 +176,17 @@ impl System<Se3> for RigidBodySe3 {
         m
     }
     /// `(Π, P) = (𝕀Ω, m v)`.
+    #[inline]
     fn momentum(&self, xi: &Vector6<f64>) -> Vector6<f64> {
         let (w, v) = split(xi);
         join(&self.body.momentum(&w), &(v * self.mass))
     }
+    #[inline]
     fn has_potential(&self) -> bool {
         self.gm.is_some()
     }
     /// `V = −GMm/r − (GM/(2r³)) (tr 𝕀 − 3 x̂ᵀ R𝕀Rᵀ x̂)`; 0 for the free body. Infinite at x = 0.
+    #[inline]
     fn potential(&self, g: &Se3) -> f64 {
         let Some(gm) = self.gm else {
             return 0.0;
@@ -194,6 +200,7 @@ impl System<Se3> for RigidBodySe3 {
     }
     /// `T*_e L_g dV = (∇_b V × b, ∇_b V)`, b = Rᵀx (derivation on the module page); non-finite at
     /// x = 0, which the integrators report as [`IntegratorError::NonFinite`].
+    #[inline]
     fn potential_differential(&self, g: &Se3) -> Vector6<f64> {
         if self.gm.is_none() {
             return Vector6::zeros();
@@ -208,9 +215,11 @@ impl System<Se3> for RigidBodySe3 {
 /// fixes aᵢ·Π), and the translation `ξ₄ = (0, P/m)` (it changes Π by a moment of P, never P);
 /// the potential (gravity gradient) is the kick. Flows by the generic exp / Ad* form.
 impl SplitSystem<Se3> for RigidBodySe3 {
+    #[inline]
     fn pieces(&self) -> usize {
         4
     }
+    #[inline]
     fn piece_velocity(&self, i: usize, mu: &Vector6<f64>) -> Vector6<f64> {
         let (pi, p) = split(mu);
         if i < 3 {

@@ -241,14 +241,17 @@ impl System<Se3> for UnderwaterVehicle {
     fn momentum(&self, xi: &Vector6<f64>) -> Vector6<f64> {
         self.kinetic.momentum(xi)
     }
+    #[inline]
     fn has_potential(&self) -> bool {
         self.weight != 0.0 || self.buoyancy != 0.0
     }
     /// `V = (W − B) x₃ + c·Γ`.
+    #[inline]
     fn potential(&self, g: &Se3) -> f64 {
         self.net_weight * g.translation().z + self.moment.dot(&Self::up(g))
     }
     /// `T*_e L_g dV = (c × Γ, (W − B) Γ)` (module page).
+    #[inline]
     fn potential_differential(&self, g: &Se3) -> Vector6<f64> {
         let up = Self::up(g);
         let m = self.moment.cross(&up);
@@ -256,6 +259,7 @@ impl System<Se3> for UnderwaterVehicle {
         Vector6::new(m.x, m.y, m.z, f.x, f.y, f.z)
     }
     /// `K = [[−ĉΓ̂, 0], [−(W − B)Γ̂, 0]]` (module page).
+    #[inline]
     fn force_derivative(&self, g: &Se3) -> Matrix6<f64> {
         let up = Self::up(g).cross_matrix();
         let mut k = Matrix6::zeros();
@@ -267,6 +271,7 @@ impl System<Se3> for UnderwaterVehicle {
     }
     /// |P|², a Casimir of 𝔰𝔢(3)* — reported only without gravity and buoyancy (with them the
     /// restoring force changes it).
+    #[inline]
     fn casimir(&self, mu: &Vector6<f64>) -> Option<f64> {
         (!self.has_potential()).then(|| mu.fixed_rows::<3>(3).norm_squared())
     }
@@ -275,6 +280,7 @@ impl System<Se3> for UnderwaterVehicle {
 /// With M_ωv = 0: the rotations about the eigenvectors of M_ωω and the translation
 /// `(0, M_vv⁻¹P)` (module page); with coupling, no piece (the splittings refuse the system).
 impl SplitSystem<Se3> for UnderwaterVehicle {
+    #[inline]
     fn pieces(&self) -> usize {
         if self.split.is_some() {
             4
@@ -282,6 +288,7 @@ impl SplitSystem<Se3> for UnderwaterVehicle {
             0
         }
     }
+    #[inline]
     fn piece_velocity(&self, i: usize, mu: &Vector6<f64>) -> Vector6<f64> {
         let Some((rotation, mvv_inv)) = &self.split else {
             return Vector6::zeros();
