@@ -407,7 +407,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         } else {
             self.unnormalized + 1
         };
-        self.warm.record(h, &delta, contraction, jacobians);
+        self.warm.record(h, self.t, &delta, contraction, jacobians);
         Ok(())
     }
     fn time(&self) -> f64 {

@@ -430,6 +430,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         };
         self.warm.record(
             h,
+            self.t,
             &xi,
             solution.contraction.zip(solution.contraction_bound),
             solution.jacobians,

@@ -22,7 +22,8 @@ fn g0() -> Option<So3> {
 const PI0: Vector3<f64> = Vector3::new(0.5, 1.0, 0.2);
 
 /// Six records of one step size are needed; the extrapolation reproduces quintics exactly (to
-/// round-off) and is O(δ⁶) for smooth sequences; a new step size starts afresh.
+/// round-off) and is O(δ⁶) for smooth sequences; another step size has its own slot and leaves
+/// the first one's extrapolation as it was; samples unequally spaced in time start afresh.
 #[test]
 fn extrapolation_is_exact_for_quintics_and_needs_six_steps_of_one_size() {
     let quintic = |k: f64| {
@@ -35,25 +36,51 @@ fn extrapolation_is_exact_for_quintics_and_needs_six_steps_of_one_size() {
     let mut w = WarmStart::<So3>::default();
     for k in 0..6 {
         assert!(w.predict(0.1).is_none(), "after {k} records");
-        w.record(0.1, &quintic(k as f64), None, 0);
+        w.record(0.1, 0.1 * k as f64, &quintic(k as f64), None, 0);
     }
     let p = w.predict(0.1).expect("six records of h = 0.1");
     assert!((p - quintic(6.0)).amax() < 1e-12, "{p} vs {}", quintic(6.0));
     // the ring keeps going: one more record, the next value
-    w.record(0.1, &quintic(6.0), None, 0);
+    w.record(0.1, 0.6, &quintic(6.0), None, 0);
     let p = w.predict(0.1).unwrap();
     assert!((p - quintic(7.0)).amax() < 1e-12, "{p} vs {}", quintic(7.0));
     assert!(w.predict(0.2).is_none(), "another step size");
     assert!(w.predict(-0.1).is_none(), "the reversed step");
-    w.record(0.2, &quintic(8.0), None, 0);
-    assert!(w.predict(0.1).is_none() && w.predict(0.2).is_none());
+    // a step of another size (a composition's next stage) goes to its own slot
+    w.record(0.2, 0.75, &quintic(8.0), None, 0);
+    assert!(w.predict(0.2).is_none());
+    assert_eq!(w.predict(0.1), Some(p), "h = 0.1 kept its extrapolation");
+    // a sample of h = 0.1 off the spacing of the earlier ones (0.1): the extrapolation restarts
+    // from the last two
+    w.record(0.1, 0.75, &quintic(7.0), None, 0);
+    assert!(w.predict(0.1).is_none(), "unequally spaced samples");
+    for k in 8..12 {
+        w.record(
+            0.1,
+            0.75 + 0.15 * (k - 7) as f64,
+            &quintic(k as f64),
+            None,
+            0,
+        );
+    }
+    assert!(w.predict(0.1).is_some(), "six samples spaced by 0.15");
+    // more step sizes than slots: the least recently used gives way
+    for i in 0..integrators::warm_start::SLOTS {
+        *w.chord(1.0 + i as f64) = Some(Matrix3::identity());
+        w.record(1.0 + i as f64, 2.0, &Vector3::zeros(), None, 1);
+    }
+    assert!(
+        w.predict(0.1).is_none(),
+        "h = 0.1 was the least recently used"
+    );
+    assert_eq!(*w.chord(1.0), Some(Matrix3::identity()), "the others kept");
     // a smooth non-polynomial sequence: error O(δ⁶) in the sample spacing δ
     let err = |d: f64| {
         let mut w = WarmStart::<So3>::default();
         // (no component with a vanishing sixth derivative at 0, which would hide the δ⁶ term)
         let f = |t: f64| Vector3::new((t + 0.4).sin(), (t + 0.3).cos(), (0.5 * t).exp());
         for k in 0..6 {
-            w.record(d, &f(k as f64 * d), None, 0);
+            w.record(d, k as f64 * d, &f(k as f64 * d), None, 0);
         }
         (w.predict(d).unwrap() - f(6.0 * d)).amax()
     };
@@ -73,19 +100,20 @@ fn the_newton_matrix_and_its_prior_are_kept_only_when_they_mean_something() {
     let mut w = WarmStart::<So3>::default();
     // the solver leaves its matrix in the slot of the step's size; record keeps it
     *w.chord(0.1) = Some(j);
-    w.record(0.1, &Vector3::zeros(), Some((1e-4, 2e-4)), 0);
+    w.record(0.1, 0.1, &Vector3::zeros(), Some((1e-4, 2e-4)), 0);
     assert_eq!(
         w.prior_contraction(0.1),
         Some(CHORD_REUSE_CONTRACTION),
         "never below what a kept matrix may contract by"
     );
-    w.record(0.1, &Vector3::zeros(), Some((1e-4, 2e-3)), 0);
+    w.record(0.1, 0.2, &Vector3::zeros(), Some((1e-4, 2e-3)), 0);
     assert_eq!(w.prior_contraction(0.1), Some(2e-3), "the measured bound");
     assert!(w.prior_contraction(0.2).is_none(), "another step size");
     assert!(w.chord(0.2).is_none(), "another step size");
     *w.chord(0.1) = Some(j);
     w.record(
         0.1,
+        0.3,
         &Vector3::zeros(),
         Some((CHORD_REUSE_CONTRACTION, 1e-3)),
         0,
@@ -97,19 +125,20 @@ fn the_newton_matrix_and_its_prior_are_kept_only_when_they_mean_something() {
         "still there: the solver updates it in place"
     );
     // a step that stopped after one iteration: the prior grows, the matrix stays
-    w.record(0.1, &Vector3::zeros(), None, 0);
+    w.record(0.1, 0.4, &Vector3::zeros(), None, 0);
     assert_eq!(w.prior_contraction(0.1), Some(PRIOR_INFLATION * 1e-3));
-    w.record(0.1, &Vector3::zeros(), None, 0);
+    w.record(0.1, 0.5, &Vector3::zeros(), None, 0);
     let inflated = PRIOR_INFLATION * PRIOR_INFLATION * 1e-3;
     assert_eq!(w.prior_contraction(0.1), Some(inflated));
     assert_eq!(*w.chord(0.1), Some(j));
     // a step that evaluated its own matrix: its Newton contraction says nothing of the next
     // step's; the floor
-    w.record(0.1, &Vector3::zeros(), Some((1e-9, 1e-9)), 1);
+    w.record(0.1, 0.6, &Vector3::zeros(), Some((1e-9, 1e-9)), 1);
     assert_eq!(w.prior_contraction(0.1), Some(CHORD_REUSE_CONTRACTION));
     assert_eq!(*w.chord(0.1), Some(j));
     w.record(
         0.1,
+        0.7,
         &Vector3::zeros(),
         Some((2.0 * CHORD_REUSE_CONTRACTION, 2e-3)),
         0,
@@ -118,7 +147,7 @@ fn the_newton_matrix_and_its_prior_are_kept_only_when_they_mean_something() {
     assert!(w.prior_contraction(0.1).is_none(), "no matrix, no prior");
     // a step of a new size records the matrix the solver made for it
     *w.chord(0.3) = Some(j);
-    w.record(0.3, &Vector3::zeros(), None, 1);
+    w.record(0.3, 1.0, &Vector3::zeros(), None, 1);
     assert_eq!(*w.chord(0.3), Some(j), "the new size's own matrix");
     assert!(w.predict(0.3).is_none(), "one record of h = 0.3 only");
     w.clear();
@@ -317,5 +346,37 @@ fn every_warm_step_is_within_the_tolerance_of_the_converged_step() {
                 );
             }
         }
+    }
+}
+
+/// The stages of a composition keep their Newton matrices from one composed step to the next:
+/// Lie–Poisson θ = ½ stepped through the triple jump's stage sizes γ₁h, γ₂h, γ₁h (as
+/// [`integrators::Composition`] steps it) at h = 0.01 evaluates at most 10 Jacobians over its
+/// last 300 composed steps (900 stages) — 4 measured; with one slot for the last step size only
+/// it evaluated 600 (one per stage but for the γ₁h stage that follows one of its own size).
+#[test]
+fn composition_stages_keep_their_matrices() {
+    let g1 = 1.0 / (2.0 - 2f64.cbrt());
+    let stages = [g1 * 0.01, (1.0 - 2.0 * g1) * 0.01, g1 * 0.01];
+    for theta in [0.5, 0.0] {
+        let mut lp = LiePoisson::<So3, Cayley, _>::new(body(), theta, PI0, g0()).unwrap();
+        let (mut jacobians, mut residuals) = (0, 0);
+        for k in 0..310 {
+            for &h in &stages {
+                lp.step(h).unwrap();
+                if k >= 10 {
+                    jacobians += lp.last_jacobians();
+                    residuals += lp.last_iterations();
+                }
+            }
+        }
+        eprintln!(
+            "θ = {theta}: {jacobians} Jacobians, {:.2} residuals per stage",
+            residuals as f64 / 900.0
+        );
+        assert!(
+            jacobians <= 10,
+            "θ = {theta}: {jacobians} Jacobians in 900 stages"
+        );
     }
 }

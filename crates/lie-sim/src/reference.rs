@@ -8,8 +8,8 @@
 //! - **Every other scene:** the Gragg–Bulirsch–Stoer method of order 12
 //!   ([`integrators::GraggBulirschStoer`]; it shares no discretization with any candidate) at
 //!   h₀ = min(T, 1/ω) (ω the scene's time scale, [`crate::ladder::characteristic_rate`]; the
-//!   scene's step when ω = 0), h₀/2, h₀/4, …, every run ending its steps on the knots of a torque
-//!   schedule (where the force has kinks), until two successive runs agree to the tolerance
+//!   scene's step when ω = 0), h₀/2, h₀/4, …, every run ending its steps on the knots of the force
+//!   schedules (torque, force, thrust, wheel torques: where the force has kinks), until two successive runs agree to the tolerance
 //!   (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`] relative, in the trade's error measure
 //!   [`crate::trade::FinalState::error`]). Refinement stops early when it stalls at the rounding
 //!   level (two successive refinements each reduce the difference by less than [`STALL_RATIO`],
@@ -270,20 +270,19 @@ fn spread(states: &[FinalState]) -> f64 {
     worst
 }
 
-/// The times in (0, T) where the scene's forces have kinks (a torque schedule's knots).
+/// The times in (0, T) where the scene's forces have kinks: the knots of every schedule (body
+/// torque and force, thrust, wheel torques), sorted, each once.
 fn breakpoints(scene: &Scene) -> Vec<f64> {
-    let mut v: Vec<f64> = scene
-        .system
-        .forces()
-        .and_then(|f| f.torque.as_ref())
-        .map(|s| {
-            s.times()
-                .iter()
-                .copied()
-                .filter(|&t| t > 0.0 && t < scene.duration)
-                .collect()
-        })
-        .unwrap_or_default();
+    let Some(f) = scene.system.forces() else {
+        return Vec::new();
+    };
+    let mut v: Vec<f64> = [&f.torque, &f.force, &f.thrust, &f.wheel_torque]
+        .into_iter()
+        .flatten()
+        .flat_map(|s| s.times().iter().copied())
+        .filter(|&t| t > 0.0 && t < scene.duration)
+        .collect();
+    v.sort_by(f64::total_cmp);
     v.dedup();
     v
 }
@@ -511,7 +510,7 @@ fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Refer
             if breaks.is_empty() {
                 String::new()
             } else {
-                format!(", ending on the torque schedule's {} knots", breaks.len())
+                format!(", ending on the force schedules' {} knots", breaks.len())
             },
             start.elapsed().as_secs_f64()
         ),
@@ -658,22 +657,33 @@ mod tests {
     }
 
     /// The detumbling scene's torque has knots at 0, 5 and 5.1: the reference's steps end on the
-    /// interior ones that lie before T.
+    /// interior ones that lie before T. The quadrotor's thrust and torque schedules both count
+    /// (thrust 0, 1, 1.1, 2, 2.1; torque 2.5 … 3.4), merged in order; the reaction wheels' too.
     #[test]
-    fn the_breakpoints_are_the_torque_knots_inside_the_horizon() {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../examples/scenes/detumbling-spacecraft.toml");
-        let at = |duration: f64| {
+    fn the_breakpoints_are_the_knots_of_every_schedule_inside_the_horizon() {
+        let scene = |name: &str, duration: f64| {
+            let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("../../examples/scenes")
+                .join(name);
             let overrides = crate::scene::Overrides {
                 duration: Some(duration),
                 step: None,
                 stride: None,
             };
-            breakpoints(&Scene::load(&path, overrides).unwrap())
+            Scene::load(&path, overrides).unwrap()
         };
+        let at = |duration: f64| breakpoints(&scene("detumbling-spacecraft.toml", duration));
         assert_eq!(at(60.0), [5.0, 5.1]);
         assert_eq!(at(5.05), [5.0]);
         assert!(at(5.0).is_empty());
+        assert_eq!(
+            breakpoints(&scene("quadrotor.toml", 5.0)),
+            [1.0, 1.1, 2.0, 2.1, 2.5, 2.6, 2.9, 3.0, 3.3, 3.4]
+        );
+        assert_eq!(
+            breakpoints(&scene("reaction-wheel-slew.toml", 60.0)),
+            [20.0, 20.05, 40.0, 40.05]
+        );
         let free = Scene::default_scene(Default::default()).unwrap();
         assert!(breakpoints(&free).is_empty());
     }
