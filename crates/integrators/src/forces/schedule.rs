@@ -5,6 +5,15 @@ use crate::IntegratorError;
 /// A piecewise-linear schedule `u(t)`: `values[i]` at `times[i]`, linear in between, constant
 /// before the first and after the last time (a single entry is a constant).
 ///
+/// Each knot is a kink, and a method of order p > 2 keeps its order across a kink only where its
+/// steps end on the knot and it samples the force inside the step. Compositions with a large
+/// negative stage reach outside the step (the triple jump's stages end at t + 1.35h and
+/// t − 0.35h), and the splittings' kicks sample the force there: on the far side of a knot, at an
+/// O(h²) cost per knot (the triple jump of the forced Strang splitting measured order 2.00 where it
+/// is 4 on a smooth input; docs/work-precision.md, quadrotor). The constant extension before the
+/// first time is a kink too when the first segment has a slope: to start a run on a ramp, put a
+/// knot before the start continuing it.
+///
 /// Built only from finite, strictly increasing times and finite values of one length; otherwise
 /// an [`IntegratorError::InvalidParameter`] naming the offending entry.
 #[derive(Debug, Clone, PartialEq)]
