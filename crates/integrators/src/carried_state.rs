@@ -6,8 +6,9 @@
 //! 16-byte vector straddling both stores. The processor cannot forward such a load from its store
 //! buffer and waits for the stores to retire. Loads of single f64s are always contained in one
 //! store, so they are forwarded whatever the stores were. Measured in criterion (free rigid body,
-//! h = 0.01, with the attitude): `QuaternionRk4` 62.7 → 49.3 ns per step, `Rkmk4` 72.5 → 62.0;
-//! a hand-written RK4 with a time variable added, 50.2 → 43.9.
+//! h = 0.01, with the attitude, same runs): `QuaternionRk4` 62.7 → 48–52 ns per step, `Rkmk4`
+//! 72.5 → 62.0; a hand-written RK4 with a time variable added, 50.2 → 46.6 (43.9 with volatile
+//! reads, which would need `unsafe`).
 //!
 //! [`read`] is used once per step, on the state the previous step wrote, by the explicit steps
 //! short enough for the stall to matter.

@@ -9,8 +9,8 @@
 //!   ([`integrators::GraggBulirschStoer`]; it shares no discretization with any candidate) at
 //!   h₀ = min(T, 1/ω) (ω the scene's time scale, [`crate::ladder::characteristic_rate`]; the
 //!   scene's step when ω = 0), h₀/2, h₀/4, …, every run ending its steps on the knots of the force
-//!   schedules (torque, force, thrust, wheel torques: where the force has kinks), until two successive runs agree to the tolerance
-//!   (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`] relative, in the trade's error measure
+//!   schedules (torque, force, thrust, wheel torques: where the force has kinks), until two
+//!   successive runs agree to the tolerance (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`] relative, in the trade's error measure
 //!   [`crate::trade::FinalState::error`]). Refinement stops early when it stalls at the rounding
 //!   level (two successive refinements each reduce the difference by less than [`STALL_RATIO`],
 //!   once it is below [`STALL_GATE`]), and when `--reference-budget` (default [`DEFAULT_BUDGET`])
