@@ -29,18 +29,18 @@
 //! measures no ρ, and η doubles ([`PRIOR_INFLATION`]) at every such step, which forces a second
 //! iteration — a new measurement — within a few steps.
 //!
-//! Everything is kept per step size: [`SLOTS`] step sizes (bitwise) at a time, the least
-//! recently used one giving way to a new size, so the stages of a composition — each a step of
-//! its own size γᵢh, repeated once per composed step — keep their matrices and extrapolations
-//! from one composed step to the next (a plain run uses one slot). The extrapolation of a slot
-//! also needs its samples equally spaced in time (to 10⁻³ relative): the two stages of a
-//! palindromic scheme that share a size (γ₁ = γₛ) alternate their spacings, and their slot keeps
-//! only its matrix. Measured on the gyrostat (SO(3) × ℝ³, whose Newton matrix is a dense faer
-//! matrix), Lie–Poisson θ = ½ under the triple jump: 3377 → 552 ns per stage (the plain step: 271
-//! ns); the slot of the current size is kept apart from the parked ones, so a plain run costs
-//! what it did with one slot. A reset or a new solver configuration starts afresh. The warm start changes only
-//! where the iteration starts: the step is still solved to the solver's tolerance, so results
-//! agree with a cold start to that tolerance (not bitwise).
+//! Everything is kept per step size: [`SLOTS`] step sizes (bitwise) at a time, the least recently
+//! used one giving way to a new size, so the stages of a composition — each a step of its own size
+//! γᵢh, repeated once per composed step — keep their matrices and extrapolations from one composed
+//! step to the next (a plain run uses one slot). The extrapolation of a slot also needs its samples
+//! equally spaced in time (to 10⁻³ relative): the two stages of a palindromic scheme that share a
+//! size (γ₁ = γₛ) alternate their spacings, and their slot keeps only its matrix. Measured on the
+//! gyrostat (SO(3) × ℝ³, whose Newton matrix is a dense faer matrix), Lie–Poisson θ = ½ under the
+//! triple jump: 3377 → 552 ns per stage (the plain step: 271 ns); the slot of the current size is
+//! kept apart from the parked ones, so a plain run costs what it did with one slot. A reset or a
+//! new solver configuration starts afresh. The warm start changes only where the iteration starts:
+//! the step is still solved to the solver's tolerance, so results agree with a cold start to that
+//! tolerance (not bitwise).
 
 use lie_groups::{LieGroup, Vector};
 

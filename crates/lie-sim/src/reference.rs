@@ -10,18 +10,18 @@
 //!   h₀ = min(T, 1/ω) (ω the scene's time scale, [`crate::ladder::characteristic_rate`]; the
 //!   scene's step when ω = 0), h₀/2, h₀/4, …, every run ending its steps on the knots of the force
 //!   schedules (torque, force, thrust, wheel torques: where the force has kinks), until two
-//!   successive runs agree to the tolerance (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`] relative, in the trade's error measure
-//!   [`crate::trade::FinalState::error`]). Refinement stops early when it stalls at the rounding
-//!   level (two successive refinements each reduce the difference by less than [`STALL_RATIO`],
-//!   once it is below [`STALL_GATE`]), and when `--reference-budget` (default [`DEFAULT_BUDGET`])
-//!   has run out: the first two runs always complete, a later run is abandoned at the deadline.
-//!   The finer run of the closest-agreeing pair is then run again [`EXTRA_SAMPLES`] times with 1,
-//!   2 more steps (the same accuracy, roundings that fall differently): the reference is the mean
-//!   of these runs, and the spread of them and the run at twice the step (the largest difference
-//!   between two) bounds both the truncation error (at order 12 the finer run's is ~2¹² times
-//!   below the difference) and the rounding error of the mean. Two runs alone can agree by chance
-//!   far better than either is accurate (the heavy top over T = 2: 6.7e-16 between h and h/2,
-//!   3.7e-14 between runs of 160 and 162 steps).
+//!   successive runs agree to the tolerance (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`]
+//!   relative, in the trade's error measure [`crate::trade::FinalState::error`]). Refinement stops
+//!   early when it stalls at the rounding level (two successive refinements each reduce the
+//!   difference by less than [`STALL_RATIO`], once it is below [`STALL_GATE`]), and when
+//!   `--reference-budget` (default [`DEFAULT_BUDGET`]) has run out: the first two runs always
+//!   complete, a later run is abandoned at the deadline. The finer run of the closest-agreeing pair
+//!   is then run again [`EXTRA_SAMPLES`] times with 1, 2 more steps (the same accuracy, roundings
+//!   that fall differently): the reference is the mean of these runs, and the spread of them and the
+//!   run at twice the step (the largest difference between two) bounds both the truncation error (at
+//!   order 12 the finer run's is ~2¹² times below the difference) and the rounding error of the mean.
+//!   Two runs alone can agree by chance far better than either is accurate (the heavy top over T = 2:
+//!   6.7e-16 between h and h/2, 3.7e-14 between runs of 160 and 162 steps).
 //!
 //! To either estimate [`data_rounding`] is added: what rounding the scene's data (inertia,
 //! masses) does to every run alike, which no comparison of runs can see. When the estimate is
