@@ -2,7 +2,9 @@
 //! free rigid body 𝕀 = diag(1, 2, 3), Π₀ = (0.5, 1, 0.2), h = 0.01, unforced and with a constant
 //! body torque (target: forced ≤ 1.2× unforced), and with torque + damping; RK4 alongside.
 //! Every measured step starts from the same state (`iter_batched_ref`), so the torque's growth of
-//! Π does not change what is measured.
+//! Π does not change what is measured: the initial state with nothing carried (a run's first,
+//! cold step), and for Lie–Poisson also the state after 10 steps with what they left for the next
+//! (`…/warm`: a run's steady step).
 //!
 //! Run: `cargo bench -p lie-integrators --bench forces -- --warm-up-time 1 --measurement-time 2`.
 //! The figures are in docs/benchmarks.md.
@@ -30,6 +32,22 @@ fn bench<I: Integrator + Clone>(
         )
     });
 }
+
+/// [`bench`] from the state after [`WARM`] steps, with what they left for the next step (the
+/// warm start): a run's steady step, where the cold one is its first.
+fn bench_warm<I: Integrator + Clone>(
+    c: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    id: &str,
+    mut integ: I,
+) {
+    for _ in 0..WARM {
+        integ.step(H).unwrap();
+    }
+    bench(c, id, integ);
+}
+
+/// Steps taken before a warm measured step (the warm start extrapolates from six).
+const WARM: usize = 10;
 
 fn forces(c: &mut Criterion) {
     let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
@@ -59,6 +77,16 @@ fn forces(c: &mut Criterion) {
             g0,
         )
         .unwrap(),
+    );
+    bench_warm(
+        &mut group,
+        "lp-cayley-0.5/unforced/warm",
+        lp_unforced(&body, pi0, g0),
+    );
+    bench_warm(
+        &mut group,
+        "lp-cayley-0.5/torque/warm",
+        lp(Forced::new(body.clone(), torque.clone())),
     );
     bench(
         &mut group,
