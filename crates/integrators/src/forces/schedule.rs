@@ -87,6 +87,15 @@ impl Schedule {
     /// [`Self::STACK_DIM`] (no allocation; a heap buffer beyond).
     #[inline]
     pub fn eval_with<R>(&self, t: f64, f: impl FnOnce(&[f64]) -> R) -> R {
+        // Before the first knot, from the last on, or a constant: a stored value, as it is (what
+        // `eval_into` copies there).
+        let last = self.times.len() - 1;
+        if t < self.times[0] {
+            return f(&self.values[0]);
+        }
+        if t >= self.times[last] {
+            return f(&self.values[last]);
+        }
         let n = self.dim();
         let mut buf = [0.0; Self::STACK_DIM];
         if n <= buf.len() {
@@ -136,6 +145,30 @@ mod tests {
         ] {
             s.eval_into(t, &mut out);
             assert_eq!(out, want, "t = {t}");
+        }
+    }
+
+    /// `eval_with` returns the stored values where it skips the buffer (before the first knot,
+    /// from the last on, a constant) and equals `eval_into` bitwise everywhere, -0.0 included.
+    #[test]
+    fn eval_with_equals_eval_into_bitwise() {
+        let ramp = Schedule::new(
+            vec![-1.0, 0.5, 2.0],
+            vec![vec![-0.0, 1.0], vec![3.0, -2.0], vec![0.25, 7.0]],
+        )
+        .unwrap();
+        let constant = Schedule::constant(vec![-0.0, 4.0]).unwrap();
+        for s in [&ramp, &constant] {
+            for t in [-5.0, -1.0, -0.3, 0.5, 1.7, 2.0, 9.0, f64::NAN] {
+                let mut want = [0.0; 2];
+                s.eval_into(t, &mut want);
+                let got = s.eval_with(t, |u| [u[0], u[1]]);
+                assert_eq!(
+                    got.map(f64::to_bits),
+                    want.map(f64::to_bits),
+                    "t = {t}: {got:?} against {want:?}"
+                );
+            }
         }
     }
 
