@@ -23,8 +23,9 @@
 //! ```
 //!
 //! a smooth ODE on the vector space 𝔤 × 𝔤*, to which the classical theory applies unchanged.
-//! The increments are added to μ with Kahan's compensated summation (Hairer–Lubich–Wanner, *GNI*
-//! §VIII.5), so that over many steps μ carries the rounding of one addition, not of all.
+//! The increments are added to μ by compensated summation (the crate's TwoSum, as the
+//! Lie–Poisson and Euler–Poincaré steps do; *GNI* §VIII.5), so that over many steps μ carries the
+//! rounding of one addition, not of all.
 //! `(d^L exp_Θ)⁻¹ ξ = Σ_{m≥0} bₘ ad_Θᵐ ξ` with `x/(1 − e^{−x}) = Σ bₘ xᵐ` (b₀ = 1, b₁ = ½,
 //! b₂ₘ = B₂ₘ/(2m)!, odd m > 1 zero) is summed by brackets alone until its terms fall below the
 //! rounding of the sum ([`dexp_left_inv_series`]); it converges while the spectral radius of ad_Θ
@@ -62,6 +63,7 @@
 //! forms; on SE(3), SE(2) and SO(4) against independent classical RK4 runs. No allocation per step
 //! for SO(3), SE(3), SE(2) (`tests/no_alloc.rs`).
 
+use crate::compensated::two_sum;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use lie_groups::{LieGroup, Vector};
@@ -163,8 +165,8 @@ pub struct GraggBulirschStoer<G: LieGroup, S: System<G>> {
     system: S,
     t: f64,
     mu: G::Algebra,
-    /// The rounding error of the last `μ + δ` (Kahan's compensated summation).
-    mu_carry: G::Algebra,
+    /// The rounding error of the last `μ + δ`, added to the next increment (TwoSum).
+    mu_err: G::Algebra,
     g: Option<G>,
     /// k: the extrapolation columns (order 2k).
     columns: usize,
@@ -208,7 +210,7 @@ impl<G: LieGroup, S: System<G>> GraggBulirschStoer<G, S> {
             system,
             t: 0.0,
             mu: mu0,
-            mu_carry: G::Algebra::zeros(n),
+            mu_err: G::Algebra::zeros(n),
             g: g0,
             columns,
             table: vec![(G::Algebra::zeros(n), G::Algebra::zeros(n)); columns],
@@ -346,12 +348,11 @@ impl<G: LieGroup, S: System<G>> Integrator for GraggBulirschStoer<G, S> {
             }
             None => None,
         };
-        // μ_{k+1} = μ_k + δ with Kahan's compensated summation (GNI §VIII.5): the bits of δ that
-        // the addition rounds away are carried into the next step instead of lost, so μ does not
+        // μ_{k+1} = μ_k + (δ + e_k) by TwoSum (crate::compensated): the bits of δ that the
+        // addition rounds away are carried into the next step instead of lost, so μ does not
         // random-walk by ε|μ| per step (which a fast spin turns into a phase drift ∝ T).
-        let y = delta.sub(&self.mu_carry);
-        let sum = self.mu.add(&y);
-        self.mu_carry = sum.sub(&self.mu).sub(&y);
+        let (sum, err) = two_sum(&self.mu, &delta.add(&self.mu_err));
+        self.mu_err = err;
         self.mu = sum;
         self.g = g1;
         self.t += h;

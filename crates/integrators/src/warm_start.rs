@@ -149,8 +149,10 @@ impl<G: LieGroup> Slot<G> {
 pub struct WarmStart<G: LieGroup> {
     /// The slot of the last step's size: a plain run touches only it.
     current: Slot<G>,
-    /// The other sizes' slots, parked until a step of their size swaps them in.
-    parked: [Slot<G>; SLOTS - 1],
+    /// The other sizes' slots (at most [`SLOTS`] − 1), parked until a step of their size swaps
+    /// them in; made when a second size first appears, so a plain run holds one slot only (its
+    /// past solutions are heap vectors on SO(n), 1225 entries each at n = 50).
+    parked: Vec<Slot<G>>,
     /// The use counter ([`Slot::used`]).
     clock: u64,
 }
@@ -159,7 +161,7 @@ impl<G: LieGroup> Default for WarmStart<G> {
     fn default() -> Self {
         Self {
             current: Slot::default(),
-            parked: core::array::from_fn(|_| Slot::default()),
+            parked: Vec::new(),
             clock: 0,
         }
     }
@@ -206,8 +208,15 @@ impl<G: LieGroup> WarmStart<G> {
         self.current.used = self.clock;
         let i = match self.parked.iter().position(|s| s.holds(h)) {
             Some(i) => i,
+            None if self.parked.len() < SLOTS - 1 => {
+                let mut fresh = Slot::default();
+                fresh.take_for(h);
+                self.parked
+                    .push(core::mem::replace(&mut self.current, fresh));
+                return;
+            }
             None => {
-                let i = (0..SLOTS - 1)
+                let i = (0..self.parked.len())
                     .min_by_key(|&i| self.parked[i].used)
                     .unwrap_or(0);
                 self.parked[i].take_for(h);

@@ -16,16 +16,6 @@ use nalgebra::{Matrix3, SMatrix, Vector3};
 
 type M6 = SMatrix<f64, 6, 6>;
 
-/// Deterministic matrix with entries uniform in [−s, s] (a 64-bit LCG, Knuth's MMIX constants).
-fn lcg_matrix(seed: &mut u64, s: f64) -> M6 {
-    M6::from_fn(|_, _| {
-        *seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((*seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0) * s
-    })
-}
-
 /// The power sums Σγ_i^k for odd k = 3, 5, …, order − 1 vanish: the order conditions of the
 /// commutative case (necessary for the order). Tolerance 1e-14 · Σ|γ_i|^k: the sums are of
 /// O(1) terms rounded to 1 ulp each.
@@ -78,17 +68,8 @@ fn scheme_constructors_refuse_bad_orders_and_coefficients() {
 /// order-10 scheme is only seen pre-asymptotically, its slope falling 12.2 → 11.4 towards 11.
 #[test]
 fn every_builtin_scheme_has_its_order_on_a_noncommuting_linear_splitting() {
-    let mut seed = 0x5eed;
-    let (a, b, c) = (
-        lcg_matrix(&mut seed, 0.4),
-        lcg_matrix(&mut seed, 0.4),
-        lcg_matrix(&mut seed, 0.4),
-    );
-    let base = |h: f64| {
-        let ea = (a * (h / 2.0)).exp();
-        let eb = (b * (h / 2.0)).exp();
-        ea * eb * (c * h).exp() * eb * ea
-    };
+    let split = LinearSplitting::new();
+    let base = |h: f64| split.strang(h);
     for scheme in CompositionScheme::builtin() {
         let (mut hs, mut errs) = (vec![], vec![]);
         // h = 2^{−k/2}: ratio √2, so that even order 10 keeps ≥ 3 errors in the window.
@@ -98,7 +79,7 @@ fn every_builtin_scheme_has_its_order_on_a_noncommuting_linear_splitting() {
             for &g in scheme.gammas() {
                 psi = base(g * h) * psi;
             }
-            let err = (psi - ((a + b + c) * h).exp()).amax();
+            let err = (psi - split.exact(h)).amax();
             if (1e-12..1e-5).contains(&err) {
                 hs.push(h);
                 errs.push(err);

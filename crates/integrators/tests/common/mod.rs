@@ -251,3 +251,43 @@ fn rk4_matrix_momentum(
     }
     (r, p)
 }
+
+/// Deterministic 6×6 matrix with entries uniform in [−s, s] (a 64-bit LCG, Knuth's MMIX
+/// constants).
+fn lcg_matrix(seed: &mut u64, s: f64) -> nalgebra::SMatrix<f64, 6, 6> {
+    nalgebra::SMatrix::<f64, 6, 6>::from_fn(|_, _| {
+        *seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((*seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0) * s
+    })
+}
+
+/// `x' = (A + B + C)x` for three fixed random non-commuting 6×6 matrices (entries in [−0.4, 0.4]):
+/// the test bed of the full order conditions of compositions and processing.
+pub struct LinearSplitting {
+    a: nalgebra::SMatrix<f64, 6, 6>,
+    b: nalgebra::SMatrix<f64, 6, 6>,
+    c: nalgebra::SMatrix<f64, 6, 6>,
+}
+
+impl LinearSplitting {
+    pub fn new() -> Self {
+        let mut seed = 0x5eed;
+        Self {
+            a: lcg_matrix(&mut seed, 0.4),
+            b: lcg_matrix(&mut seed, 0.4),
+            c: lcg_matrix(&mut seed, 0.4),
+        }
+    }
+    /// The symmetric order-2 splitting `e^{hA/2} e^{hB/2} e^{hC} e^{hB/2} e^{hA/2}`.
+    pub fn strang(&self, h: f64) -> nalgebra::SMatrix<f64, 6, 6> {
+        let ea = (self.a * (h / 2.0)).exp();
+        let eb = (self.b * (h / 2.0)).exp();
+        ea * eb * (self.c * h).exp() * eb * ea
+    }
+    /// The exact flow `e^{h(A+B+C)}`.
+    pub fn exact(&self, h: f64) -> nalgebra::SMatrix<f64, 6, 6> {
+        ((self.a + self.b + self.c) * h).exp()
+    }
+}

@@ -80,15 +80,8 @@ def u(a, b):
     return rnd.uniform(a, b)
 
 
-lines = []
-for n, t in enumerate([1.0, 10.0, 30.0, 10.0, 5.0]):
-    i, i3 = dbl(u(1, 3)), dbl(u(1, 4))
-    w0 = [u(-1, 1) for _ in range(3)]
-    r0 = r0_of(w0)
-    pi0 = [dbl(u(-2, 2)) for _ in range(3)]
-    T = mp.mpf(t)
-    r, pi = top(i, i3, r0, pi0, T)
-    lines.append(f"top top{n} {t!r} | {rep([i, i3] + pi0)} | {rep(flat(r0))} | {fmt(list(pi))} | {fmt(flat(r))}")
+def se3_line(name, t, i, i3, r0, pi0, T, r, pi):
+    """The se3 case over the top's (r, pi): mass, x₀, P₀ drawn next; P(T) = RᵀR₀P₀, x(T) = x₀ + T R₀P₀/m."""
     mass = dbl(u(0.5, 3))
     x0 = [dbl(u(-1, 1)) for _ in range(3)]
     p0 = [dbl(u(-1, 1)) for _ in range(3)]
@@ -100,10 +93,22 @@ for n, t in enumerate([1.0, 10.0, 30.0, 10.0, 5.0]):
         for b in range(3):
             g[a, b] = r[a, b]
         g[a, 3] = x[a]
-    lines.append(
-        f"se3 se3-{n} {t!r} | {rep([i, i3, mass] + pi0 + p0 + x0)} | {rep(flat(r0))} | "
+    return (
+        f"se3 {name} {t!r} | {rep([i, i3, mass] + pi0 + p0 + x0)} | {rep(flat(r0))} | "
         f"{fmt(list(pi) + list(p))} | {fmt(flat(g))}"
     )
+
+
+lines = []
+for n, t in enumerate([1.0, 10.0, 30.0, 10.0, 5.0]):
+    i, i3 = dbl(u(1, 3)), dbl(u(1, 4))
+    w0 = [u(-1, 1) for _ in range(3)]
+    r0 = r0_of(w0)
+    pi0 = [dbl(u(-2, 2)) for _ in range(3)]
+    T = mp.mpf(t)
+    r, pi = top(i, i3, r0, pi0, T)
+    lines.append(f"top top{n} {t!r} | {rep([i, i3] + pi0)} | {rep(flat(r0))} | {fmt(list(pi))} | {fmt(flat(r))}")
+    lines.append(se3_line("se3-" + str(n), t, i, i3, r0, pi0, T, r, pi))
 
 # Fast spins (Ω₃ = 10 … 50 rad/s) in SE(3), where rounding, amplified over T, dominates the
 # reference's error and two runs can agree far better than either is accurate.
@@ -114,21 +119,7 @@ for n, t in enumerate([10.0, 30.0, 30.0, 10.0, 30.0, 30.0]):
     pi0 = [dbl(u(-2, 2)), dbl(u(-2, 2)), dbl(u(8, 15))]
     T = mp.mpf(t)
     r, pi = top(i, i3, r0, pi0, T)
-    mass = dbl(u(0.5, 3))
-    x0 = [dbl(u(-1, 1)) for _ in range(3)]
-    p0 = [dbl(u(-1, 1)) for _ in range(3)]
-    p_s = r0 * mp.matrix(p0)
-    p = r.T * p_s
-    x = [x0[k] + T * p_s[k] / mass for k in range(3)]
-    g = mp.eye(4)
-    for a in range(3):
-        for b in range(3):
-            g[a, b] = r[a, b]
-        g[a, 3] = x[a]
-    lines.append(
-        f"se3 fast-{n} {t!r} | {rep([i, i3, mass] + pi0 + p0 + x0)} | {rep(flat(r0))} | "
-        f"{fmt(list(pi) + list(p))} | {fmt(flat(g))}"
-    )
+    lines.append(se3_line("fast-" + str(n), t, i, i3, r0, pi0, T, r, pi))
 
 # torque: knots (times, values of u) and damping; T = 10.
 for n, (times, values, d3, i3, pi30) in enumerate(
