@@ -4,7 +4,7 @@
 //!
 //! Groups:
 //! - `trade/free_body`: 𝕀 = diag(1, 2, 3), Π₀ = (0.5, 1, 0.2), R₀ given, h = 0.01: hand-written
-//!   RK4, `QuaternionRk4`, `Rkmk4`, Strang of the principal-axis rotations, the exact flow as a
+//!   RK4, `QuaternionRk4`, `Rkmk4`, Strang (the body's split: an axisymmetric body and a rotation), the exact flow as a
 //!   method (`ExactFreeBody`), each with the attitude (`+g`); Π alone (`-g`) for RK4, Strang and
 //!   the exact flow; the implicit Lie–Poisson step (Cayley, θ = ½ and 0, `+g`) for the issue's
 //!   ratio against the hand-written RK4; the modified Lie–Poisson steps (order 4 and 6, θ = ½ and

@@ -1,7 +1,7 @@
 //! Work-precision table of every integrator on the free rigid body 𝕀 = diag(1, 2, 3).
 //!
 //! For each method (Lie–Poisson and Euler–Poincaré × τ ∈ {exp, Cayley} × θ ∈ {0, ½, 1}, the
-//! explicit splitting (Strang over the principal axes) and its compositions to order 4 and 6,
+//! explicit splitting (Strang of an axisymmetric body and a rotation) and its compositions to order 4 and 6,
 //! the exact flow (Jacobi elliptic functions; also in one step to T), the explicit RK4
 //! quaternion baseline and RKMK4) and each step h of a ladder, it measures
 //!

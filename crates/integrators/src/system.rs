@@ -98,6 +98,7 @@ pub trait System<G: LieGroup> {
 }
 
 /// The trivialized force `F(g) = −T*_e L_g dV(g)`, zero when the system has no potential or no g.
+#[inline]
 pub(crate) fn force<G: LieGroup, S: System<G>>(system: &S, g: Option<&G>) -> Option<G::Algebra> {
     match g {
         Some(g) if system.has_potential() => Some(system.potential_differential(g).neg()),

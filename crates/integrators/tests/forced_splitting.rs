@@ -156,7 +156,7 @@ fn kinetic_kick_keeps_its_order_with_a_torque_of_time() {
 
 /// A pure body torque changes the spatial momentum map J = RΠ by exactly the applied spatial
 /// impulse: for Strang, `J_{k+1} − J_k = (h/2)(R_k u(t_k) + R_{k+1} u(t_k + h))` at every step to
-/// round-off (≤ 32 ulps of |J|: five plane rotations whose c² + s² = 1 rounds, J formed from R and
+/// round-off (≤ 32 ulps of |J|: three plane rotations and one Rodrigues rotation, J formed from R and
 /// Π at both ends), and over 2000 steps to a
 /// walk of roundings.
 #[test]

@@ -234,7 +234,17 @@ fn fit_order(
     (fitted_order(&hs[k..], &errs[k..]), errs)
 }
 
-fn assert_effective_order(what: &str, scheme: &ProcessingScheme, (p, errs): (f64, Vec<f64>)) {
+fn assert_effective_order(what: &str, scheme: &ProcessingScheme, fit: (f64, Vec<f64>)) {
+    assert_effective_order_within(what, scheme, fit, 0.2);
+}
+
+/// As [`assert_effective_order`], with the fitted order allowed in `[p − 0.2, p + above)`.
+fn assert_effective_order_within(
+    what: &str,
+    scheme: &ProcessingScheme,
+    (p, errs): (f64, Vec<f64>),
+    above: f64,
+) {
     let e: Vec<String> = errs.iter().map(|e| format!("{e:.2e}")).collect();
     eprintln!(
         "{what}, {}: order {p:.3}, errors from h₀ down: {e:?}",
@@ -242,7 +252,7 @@ fn assert_effective_order(what: &str, scheme: &ProcessingScheme, (p, errs): (f64
     );
     let want = f64::from(scheme.order());
     assert!(
-        (p - want).abs() < 0.2,
+        p > want - 0.2 && p < want + above,
         "{what}, {}: order {p:.3}, want {want}",
         scheme.name()
     );
@@ -313,13 +323,19 @@ fn effective_orders_on_the_free_rigid_body() {
                 Box::new(Processed::composition(ep, s()).unwrap())
             }),
         );
-        assert_effective_order(
+        // The splitting is the Strang splitting of two perturbations (the body's split): the
+        // optimised 6-11 and 6-13 kernels' h⁶ term is small on it, and their errors fall with
+        // slopes 6.9 and 7.3 down to the floor (6.6 and 7.0 down to 1e-13, and alike on
+        // diag(1, 2, 3)), as the linear test's local slopes do above their floor; blanes-6 fits
+        // 6.03. A wrong processor drops the slope to 2 or 4.
+        assert_effective_order_within(
             "free body, strang splitting",
             &scheme,
             fit(&|| {
                 let st = Splitting::new(b(), pi0, Some(g0)).unwrap();
                 Box::new(Processed::composition(st, s()).unwrap())
             }),
+            1.5,
         );
     }
 }

@@ -337,6 +337,21 @@ impl So3 {
         &self.r
     }
 
+    /// `R exp(ω̂)`, bit for bit `self.compose(&So3::exp(w))`, inlined whole into the caller (the
+    /// Rodrigues matrix of [`LieGroup::exp`] is never stored): the splittings' rotation of R
+    /// about Π. Huge or non-finite ω take the out-of-line [`LieGroup::exp`].
+    #[inline(always)]
+    pub fn compose_exp(&self, w: &Vector3<f64>) -> Self {
+        let t2 = w.norm_squared();
+        if !t2.is_finite() {
+            return self.compose(&Self::exp(w));
+        }
+        let (a, b) = exp_coeffs(t2);
+        Self {
+            r: self.r * rodrigues_matrix(w, a, b),
+        }
+    }
+
     /// `R ← R exp(α êᵢ)` in place, from `(sin α, cos α)`: the rotation about the body axis eᵢ
     /// turns columns j = i+1 and k = i+2 (mod 3) of R, `(rⱼ, rₖ) ← (c rⱼ + s rₖ, c rₖ − s rⱼ)` —
     /// 12 flops, R rounded once; the splittings' principal-axis flows. The axis index is taken

@@ -90,8 +90,9 @@
 //! `integrators::modified`: order 4 or 6 at the cost of one order-2 step, free rigid body only.
 //!
 //! The explicit methods of `integrators::splitting` and `integrators::exact`:
-//! - `splitting`: Strang splitting of h into pieces with exact flows (the free body's rotations
-//!   about its principal axes, the SE(3) and SE(2) bodies' rotations and translations) and the
+//! - `splitting`: Strang splitting of h into pieces with exact flows (the free body's
+//!   axisymmetric body and one principal-axis rotation, the SE(3) and SE(2) bodies' rotations and
+//!   translations) and the
 //!   potential's kick; order 2, symmetric (so `composition` applies), Casimirs to round-off. Every
 //!   system but `geodesic-so-n` has one.
 //! - `kinetic-kick`: the exact free-body flow (Jacobi elliptic functions) between kicks of the

@@ -4,9 +4,12 @@
 //! equations", Phys. Rev. Lett. 71; Touma–Wisdom 1994; Dullweber–Leimkuhler–McLachlan 1997,
 //! "Symplectic splitting methods for rigid body molecular dynamics", J. Chem. Phys. 107).
 //!
-//! - A **kinetic piece** hᵢ whose velocity `ξᵢ = ∂hᵢ/∂μ` is constant along its own flow: the flow is
-//!   the one-parameter subgroup `μ(t) = Ad*_{exp(tξᵢ)} μ`, `g(t) = g exp(tξᵢ)` (the free body: a
-//!   rotation about the principal axis aᵢ, `hᵢ = (aᵢ·Π)²/2Iᵢ`). Declared by [`SplitSystem`].
+//! - A **kinetic piece** hᵢ with an explicit flow, declared by [`SplitSystem`]: when its velocity
+//!   `ξᵢ = ∂hᵢ/∂μ` is constant along its own flow, the one-parameter subgroup
+//!   `μ(t) = Ad*_{exp(tξᵢ)} μ`, `g(t) = g exp(tξᵢ)` (a rotation about a principal axis aᵢ,
+//!   `hᵢ = (aᵢ·Π)²/2Iᵢ`; a translation); otherwise a closed form the system provides (the free
+//!   body's axisymmetric piece `|Π|²/2I_r + ½(1/I_s − 1/I_r)(a_s·Π)²`, the product of two
+//!   commuting one-parameter flows: [`crate::systems::RigidBody`]).
 //! - The **potential piece** V(g): g is fixed, so its flow is the kick `μ ↦ μ + t F(g)`,
 //!   `F(g) = −T*_e L_g dV(g)`.
 //! - **External forces** ([`crate::forces::Forced`] systems): F_ext(t, g, ξ) joins the kick at the
@@ -25,10 +28,10 @@
 //! and kicks with the coefficients of a [`SplittingScheme`]: Strang, Blanes–Moan order 4 and 6).
 //!
 //! Systems without such a splitting (the generalized rigid body on SO(n): its pieces' velocities
-//! are not constant along their flows) do not implement [`SplitSystem`]; a scene that asks for
-//! a splitting of one is refused by name.
+//! are not constant along their flows, and no closed form is known) do not implement
+//! [`SplitSystem`]; a scene that asks for a splitting of one is refused by name.
 //!
-//! ## Example: McLachlan's splitting of the free rigid body, composed to order 6
+//! ## Example: the splitting of the free rigid body, composed to order 6
 //! ```
 //! use integrators::{splitting::Splitting, Composition, CompositionScheme, Integrator, systems::RigidBody};
 //! use lie_groups::{LieGroup, So3};
@@ -57,7 +60,8 @@ pub use kick::KICK_MAX_ITERATIONS;
 
 /// A splitting renormalizes g onto the group every this many steps. Each piece's flow multiplies
 /// g by an exact group element, so in between g leaves the group only by a random walk of
-/// roundings — up to five plane rotations per step, ‖gᵀg − I‖ ≈ ε√(5k) ≲ 1e-14 here —
+/// roundings — a few rotations per step (three and one Rodrigues product for the free body),
+/// ‖gᵀg − I‖ ≈ ε√(4k) ≲ 1e-14 here —
 /// while renormalizing at every step would round g once more per step, with a bias that the
 /// spatial momentum map accumulates (as for Lie–Poisson, whose products are one per step:
 /// [`crate::lie_poisson::RENORMALIZE_EVERY`]).

@@ -223,7 +223,7 @@ impl<const K: usize> SplitSystem<GyrostatGroup<K>> for Gyrostat<K> {
     }
     fn piece_velocity(&self, i: usize, mu: &GyrostatAlgebra<K>) -> GyrostatAlgebra<K> {
         if i < 3 {
-            let w = self.body.piece_velocity(i, &self.relative(mu));
+            let w = self.body.principal_piece_velocity(i, &self.relative(mu));
             ProductAlgebra::new(w, -self.axes.tr_mul(&w))
         } else {
             ProductAlgebra::new(Vector3::zeros(), mu.b.component_div(&self.wheel_inertia))

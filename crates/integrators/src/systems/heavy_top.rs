@@ -197,18 +197,18 @@ impl System<So3> for HeavyTop {
     }
 }
 
-/// The kinetic pieces of the body's splitting ([`RigidBody`]'s principal-axis rotations); the
-/// gravity potential is the kick.
+/// The kinetic pieces of the body's splitting ([`RigidBody`]'s: an axisymmetric body and one
+/// principal-axis rotation); the gravity potential is the kick.
 impl SplitSystem<So3> for HeavyTop {
     #[inline]
     fn pieces(&self) -> usize {
-        3
+        self.body.pieces()
     }
     #[inline]
     fn piece_velocity(&self, i: usize, mu: &Vector3<f64>) -> Vector3<f64> {
         self.body.piece_velocity(i, mu)
     }
-    #[inline]
+    #[inline(always)]
     fn piece_flow(&self, i: usize, t: f64, mu: &mut Vector3<f64>, g: Option<&mut So3>) {
         self.body.piece_flow(i, t, mu, g)
     }

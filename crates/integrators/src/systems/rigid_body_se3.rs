@@ -223,7 +223,10 @@ impl SplitSystem<Se3> for RigidBodySe3 {
     fn piece_velocity(&self, i: usize, mu: &Vector6<f64>) -> Vector6<f64> {
         let (pi, p) = split(mu);
         if i < 3 {
-            join(&self.body.piece_velocity(i, &pi), &Vector3::zeros())
+            join(
+                &self.body.principal_piece_velocity(i, &pi),
+                &Vector3::zeros(),
+            )
         } else {
             join(&Vector3::zeros(), &(p / self.mass))
         }

@@ -294,7 +294,7 @@ impl SplitSystem<Se3> for UnderwaterVehicle {
             return Vector6::zeros();
         };
         if i < 3 {
-            let w = rotation.piece_velocity(i, &mu.fixed_rows::<3>(0).into_owned());
+            let w = rotation.principal_piece_velocity(i, &mu.fixed_rows::<3>(0).into_owned());
             Vector6::new(w.x, w.y, w.z, 0.0, 0.0, 0.0)
         } else {
             let v = mvv_inv * mu.fixed_rows::<3>(3);
