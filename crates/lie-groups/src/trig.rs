@@ -14,6 +14,9 @@
 //! R = P/Q of `(asin x − x)/x`, from the same source (`e_asin.c`, `e_acos.c`), error below 2⁻⁵⁸
 //! relative; π/2 is split in two so that `acos` is also within 1 ulp.
 //!
+//! Below 2⁻⁵ `sin_cos` takes the Taylor series to x⁷ and x⁸ instead (`small_sin_cos`: the
+//! omitted terms are below 0.2 ulp), half the kernels' flops for the splittings' small angles.
+//!
 //! Why: glibc's `sincos` is a call (with range reduction for any argument and the caller's
 //! vector registers spilled around it) that costs about as much as the whole rest of `So3::exp`;
 //! the kernels are about 25 instructions that inline and overlap with the rest.
@@ -152,8 +155,9 @@ pub(crate) fn sin_cos_quadrant(x: f64) -> (f64, f64) {
     }
 }
 
-/// `(sin x, cos x)` for any x, each within 1 ulp: the fdlibm kernels without a libm call for
-/// |x| ≤ π/2 (the common case of a rotation by one step's angle), libm's `sin_cos` beyond.
+/// `(sin x, cos x)` for any x, each within 1 ulp: Taylor series of half the kernels' length for
+/// |x| ≤ 2⁻⁵ and the fdlibm kernels up to |x| ≤ π/2 (the common case of a rotation by one step's
+/// angle), without a libm call; libm's `sin_cos` beyond.
 #[inline(always)]
 pub fn sin_cos(x: f64) -> (f64, f64) {
     if x >= 0.0 {

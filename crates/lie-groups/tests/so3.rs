@@ -159,6 +159,29 @@ fn so3_exp_dual_derivative_is_continuous_across_the_small_angle_switch() {
     );
 }
 
+/// `compose_exp(ω)` is `compose(&exp(ω))` bit for bit, on every branch of the exponential (the
+/// series below 0.1, the kernels up to π/2 and π, libm beyond, the huge-angle path, NaN).
+#[test]
+fn compose_exp_is_compose_of_exp_bit_for_bit() {
+    let r0 = So3::exp(&Vector3::new(0.4, -1.1, 0.7));
+    for w in [
+        Vector3::zeros(),
+        Vector3::new(1e-9, -2e-9, 3e-10),
+        Vector3::new(0.03, -0.02, 0.05),
+        Vector3::new(0.4, 0.9, -0.3),
+        Vector3::new(1.5, -2.0, 1.0),
+        Vector3::new(5.0, 3.0, -4.0),
+        Vector3::new(1e200, -3e199, 1e199),
+    ] {
+        let (a, b) = (r0.compose_exp(&w), r0.compose(&So3::exp(&w)));
+        for (x, y) in a.as_matrix().iter().zip(b.as_matrix().iter()) {
+            assert_eq!(x.to_bits(), y.to_bits(), "ω = {w:?}");
+        }
+    }
+    let nan = r0.compose_exp(&Vector3::new(f64::NAN, 0.0, 1.0));
+    assert!(nan.as_matrix().iter().any(|x| x.is_nan()));
+}
+
 /// `rotate_about_body_axis(i, sin α, cos α)` is `R exp(α eᵢ)` for each body axis (and the index is
 /// taken mod 3), to round-off.
 #[test]

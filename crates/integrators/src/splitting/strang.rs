@@ -205,7 +205,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
             system.piece_flow(i, half, &mut mu, g.as_mut());
         }
         // The closing half-flow of the published state is off the next step's critical path: the
-        // next step starts from the state before it (`pending`).
+        // next step starts from the state before it (`lead_mu`, `lead_g`).
         let before = merges.then(|| (mu.clone(), g.clone()));
         if kicked {
             kick(system, self.t + h, half, &mut mu, g.as_ref())?;
