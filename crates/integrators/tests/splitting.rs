@@ -334,10 +334,11 @@ fn kinetic_kick_without_potential_is_the_exact_flow() {
 }
 
 /// Casimir |Π|² and the spatial momentum RΠ at round-off over 10⁶ Strang steps of the free body:
-/// no worse than the random walk of 5·10⁶ plane rotations each rounding c² + s² = 1 by ≲ 1 ulp,
-/// whose standard deviation is 2ε√(5·10⁶) ≈ 5e-13: the maximum over the run is checked at 1e-12
-/// (≈ 2σ; measured 5.1e-13 and 2.0e-13; a biased rounding, 1 ulp per rotation, would reach
-/// 1e-9), R on SO(3).
+/// no worse than the random walk of the plane rotations carried from step to step (two a step:
+/// the merged outer one and the inner one), each rounding c² + s² = 1 by ≲ 1 ulp, whose standard
+/// deviation is 2ε√(2·10⁶) ≈ 3e-13: the maximum over the run is checked at 1e-12 (measured
+/// 1.8e-13 and 6.6e-14; 5.1e-13 and 2.0e-13 with the principal-axis splitting's five rotations
+/// a step; a biased rounding, 1 ulp per rotation, would reach 1e-9), R on SO(3).
 #[test]
 fn strang_keeps_casimir_and_momentum_map_over_a_million_steps() {
     let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
