@@ -72,12 +72,14 @@ fn splitting_schemes_have_their_order_on_non_commuting_matrices() {
 
 /// Σᵢ ξᵢ(μ) = ∂h/∂μ(μ) for every system that declares a splitting, each piece's flow solves
 /// `μ̇ = ad*_ξ μ` at t = 0, and ξᵢ is constant along its own flow — but for the free body's
-/// axisymmetric piece (piece 1 of `RigidBody` and `HeavyTop`), a closed form whose velocity turns
-/// with Π, checked against the exact axisymmetric flow below.
+/// axisymmetric piece (piece 1 of `RigidBody`, `HeavyTop` and `RigidBodySe3`), a closed form whose
+/// velocity turns with Π, checked against the exact axisymmetric flow and against products of
+/// one-parameter flows below.
 #[test]
 fn pieces_sum_to_the_velocity_and_are_constant_along_their_flows() {
     fn check<G: LieGroup, S: SplitSystem<G>>(s: &S, mu: G::Algebra, g: G, name: &str) {
-        let closed_form = name == "free body" || name == "full tensor" || name == "heavy top";
+        let closed_form =
+            ["free body", "full tensor", "heavy top", "SE(3) satellite"].contains(&name);
         let mut sum = G::Algebra::zeros(G::dim());
         for i in 0..s.pieces() {
             let xi = s.piece_velocity(i, &mu);
@@ -667,4 +669,78 @@ fn merged_outer_flows_equal_the_unmerged_sequence() {
         300,
         "heavy top",
     );
+}
+
+/// The SE(3) body's pieces against products of one-parameter flows `(g, μ) ↦ (g exp(tξ),
+/// Ad*_{exp(tξ)} μ)` formed by `Se3::exp`: piece 0 is that of `(ω_p a_p, 0)`; piece 1 that of
+/// `(ω_s a_s, 0)`, then `(Π'/I_r, 0)` at the turned Π', then the translation `(0, P/m)` — three
+/// commuting flows. Diagonal and full tensors, forward and backward, to 1e-14.
+#[test]
+fn se3_body_pieces_are_products_of_one_parameter_flows() {
+    let flow = |xi: Vector6<f64>, t: f64, mu: &mut Vector6<f64>, g: &mut Se3| {
+        let e = Se3::exp(&(xi * t));
+        *mu = e.coadjoint_apply(mu);
+        *g = g.compose(&e);
+    };
+    let full = Matrix3::new(2.0, 0.1, 0.3, 0.1, 3.0, -0.2, 0.3, -0.2, 4.0);
+    for inertia in [Matrix3::from_diagonal(&Vector3::new(2.0, 3.0, 4.0)), full] {
+        let sat = RigidBodySe3::satellite(2.5, inertia, 1.0).unwrap();
+        let body = sat.body();
+        let (axes, moments) = body.principal_frame();
+        let [r, p, s] = body.split_axes();
+        let g0 = Se3::exp(&Vector6::new(0.2, 0.1, -0.3, 3.0, 0.5, -0.2));
+        for (t, mu0) in [
+            (0.7, Vector6::new(0.3, -0.4, 0.5, 0.1, 0.9, -0.2)),
+            (-1.9, Vector6::new(-1.3, 0.4, 2.5, 0.7, -0.3, 0.8)),
+        ] {
+            let pi = mu0.fixed_rows::<3>(0).into_owned();
+            let rot = |a: Vector3<f64>| Vector6::new(a.x, a.y, a.z, 0.0, 0.0, 0.0);
+            let (ap, as_) = (axes.column(p).into_owned(), axes.column(s).into_owned());
+            // Piece 0.
+            let (mut m, mut g) = (mu0, g0);
+            sat.piece_flow(0, t, &mut m, Some(&mut g));
+            let (mut me, mut ge) = (mu0, g0);
+            flow(
+                rot(ap * ((1.0 / moments[p] - 1.0 / moments[r]) * ap.dot(&pi))),
+                t,
+                &mut me,
+                &mut ge,
+            );
+            assert!(
+                (m - me).amax() < 1e-14 * mu0.amax(),
+                "piece 0 μ: {:e}",
+                (m - me).amax()
+            );
+            assert!((g.matrix() - ge.matrix()).amax() < 1e-14, "piece 0 g");
+            // Piece 1.
+            let (mut m, mut g) = (mu0, g0);
+            sat.piece_flow(1, t, &mut m, Some(&mut g));
+            let (mut me, mut ge) = (mu0, g0);
+            flow(
+                rot(as_ * ((1.0 / moments[s] - 1.0 / moments[r]) * as_.dot(&pi))),
+                t,
+                &mut me,
+                &mut ge,
+            );
+            let turned = me.fixed_rows::<3>(0).into_owned();
+            flow(rot(turned / moments[r]), t, &mut me, &mut ge);
+            let v = me.fixed_rows::<3>(3).into_owned() / sat.mass();
+            flow(
+                Vector6::new(0.0, 0.0, 0.0, v.x, v.y, v.z),
+                t,
+                &mut me,
+                &mut ge,
+            );
+            assert!(
+                (m - me).amax() < 1e-14 * mu0.amax(),
+                "piece 1 μ: {:e}",
+                (m - me).amax()
+            );
+            assert!(
+                (g.matrix() - ge.matrix()).amax() < 1e-13 * g0.matrix().amax(),
+                "piece 1 g: {:e}",
+                (g.matrix() - ge.matrix()).amax()
+            );
+        }
+    }
 }

@@ -91,8 +91,8 @@
 //!
 //! The explicit methods of `integrators::splitting` and `integrators::exact`:
 //! - `splitting`: Strang splitting of h into pieces with exact flows (the free body's
-//!   axisymmetric body and one principal-axis rotation, the SE(3) and SE(2) bodies' rotations and
-//!   translations) and the
+//!   axisymmetric body and one principal-axis rotation — on SE(3) with the translation joined to
+//!   the axisymmetric piece —, the SE(2) body's rotation and translation) and the
 //!   potential's kick; order 2, symmetric (so `composition` applies), Casimirs to round-off. Every
 //!   system but `geodesic-so-n` has one.
 //! - `kinetic-kick`: the exact free-body flow (Jacobi elliptic functions) between kicks of the

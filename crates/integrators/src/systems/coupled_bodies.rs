@@ -33,7 +33,7 @@
 //! (`tests/systems_coupled_bodies.rs` checks both, the 1D two-body oscillator's closed form and
 //! the orders against an independent RK4).
 //!
-//! **Splitting.** The bodies' own pieces (for free bodies: 3 rotations + 1 translation each, 4N
+//! **Splitting.** The bodies' own pieces (for free bodies [`super::RigidBodySe3`]'s two each, 2N
 //! in all), each flowing one body alone; the springs (and the bodies' potentials) are the kick.
 
 use crate::splitting::SplitSystem;

@@ -33,7 +33,8 @@
 //! rest and level, is an equilibrium the integrators keep exactly. The energy changes by the work
 //! of the inputs, `∫ (f v₃ + τ·Ω) dt`.
 //!
-//! **Splitting**: the free body's (rotations about the principal axes of 𝕀, translation), with
+//! **Splitting**: the free body's ([`RigidBodySe3`]'s: a rotation, and the axisymmetric body
+//! joined by the translation), with
 //! gravity and the inputs in the kicks (exactly: they do not read ξ); the exact free-body flow
 //! ([`crate::exact::FreeBodySe3Flow`] of [`Quadrotor::body`]) serves the kinetic–kick schemes.
 
@@ -153,7 +154,7 @@ impl System<Se3> for Quadrotor {
     }
 }
 
-/// The free body's pieces (rotations about the principal axes, translation); gravity and the
+/// The free body's pieces ([`RigidBodySe3`]'s two); gravity and the
 /// inputs are kicks.
 impl SplitSystem<Se3> for Quadrotor {
     #[inline]

@@ -158,17 +158,63 @@ impl RigidBody {
         t: f64,
         mu: &mut Vector3<f64>,
         g: Option<&mut So3>,
+        p: Option<&mut Vector3<f64>>,
     ) {
         match axis {
-            0 => self.turn_about_axis(0, rate, t, mu, g),
-            1 => self.turn_about_axis(1, rate, t, mu, g),
-            _ => self.turn_about_axis(2, rate, t, mu, g),
+            0 => self.turn_about_axis(0, rate, t, mu, g, p),
+            1 => self.turn_about_axis(1, rate, t, mu, g, p),
+            _ => self.turn_about_axis(2, rate, t, mu, g, p),
         }
     }
 
-    /// `Π ← exp(−α âᵢ) Π`, `R ← R exp(α âᵢ)` for the principal axis i, α = `rate · t · (aᵢ·Π)`:
-    /// with a diagonal 𝕀 a plane rotation of two coordinates of Π and of two columns of R (one
-    /// `sin_cos` without a libm call for |α| ≤ π/2, 16 flops), else through [`So3::exp`].
+    /// The flow of piece i of the body's splitting ([`SplitSystem`] impl) for a time t, with a
+    /// vector p (the SE(3) body's linear momentum P) turned as Π is: each piece's flow is
+    /// `g ↦ g Q`, `μ ↦ Ad*_Q μ` for a rotation Q, and on 𝔰𝔢(3)* `Ad*_(Q, 0)(Π, P) = (QᵀΠ, QᵀP)`.
+    #[inline(always)]
+    pub(crate) fn split_flow(
+        &self,
+        i: usize,
+        t: f64,
+        mu: &mut Vector3<f64>,
+        g: Option<&mut So3>,
+        p: Option<&mut Vector3<f64>>,
+    ) {
+        let [_, axis_p, axis_s] = self.split_axes;
+        let [inv_r, rate_p, rate_s] = self.split_rates;
+        if i == 0 {
+            self.turn_about(axis_p, rate_p, t, mu, g, p);
+            return;
+        }
+        // Q = exp(tΠ̂/I_r) exp(β â_s): the first factor from the Π before the turn (it does not
+        // wait for the turn's sin_cos) fixes Π itself and turns R and P.
+        let w = *mu * (t * inv_r);
+        let (g, p) = match p {
+            None => (
+                g.map(|g| {
+                    *g = g.compose_exp(&w);
+                    g
+                }),
+                None,
+            ),
+            Some(p) => {
+                let e = So3::exp(&w);
+                *p = e.coadjoint_apply(p);
+                (
+                    g.map(|g| {
+                        *g = g.compose(&e);
+                        g
+                    }),
+                    Some(p),
+                )
+            }
+        };
+        self.turn_about(axis_s, rate_s, t, mu, g, p);
+    }
+
+    /// `Π ← exp(−α âᵢ) Π`, `R ← R exp(α âᵢ)` (and `p ← exp(−α âᵢ) p`) for the principal axis i,
+    /// α = `rate · t · (aᵢ·Π)`: with a diagonal 𝕀 a plane rotation of two coordinates of Π and of
+    /// two columns of R (one `sin_cos` without a libm call for |α| ≤ π/2, 16 flops), else through
+    /// [`So3::exp`].
     #[inline(always)]
     fn turn_about_axis(
         &self,
@@ -177,11 +223,15 @@ impl RigidBody {
         t: f64,
         mu: &mut Vector3<f64>,
         g: Option<&mut So3>,
+        p: Option<&mut Vector3<f64>>,
     ) {
         if !self.diagonal {
             let a = self.axes.column(i);
             let e = So3::exp(&(a * (t * rate * a.dot(mu))));
             *mu = e.coadjoint_apply(mu);
+            if let Some(p) = p {
+                *p = e.coadjoint_apply(p);
+            }
             if let Some(g) = g {
                 *g = g.compose(&e);
             }
@@ -197,6 +247,11 @@ impl RigidBody {
         let (pj, pk) = (mu[j], mu[k]);
         mu[j] = c * pj + s * pk;
         mu[k] = c * pk - s * pj;
+        if let Some(p) = p {
+            let (pj, pk) = (p[j], p[k]);
+            p[j] = c * pj + s * pk;
+            p[k] = c * pk - s * pj;
+        }
         // R ← R exp(α êᵢ): columns j and k of R turn by +α, in place.
         if let Some(g) = g {
             g.rotate_about_body_axis(i, s, c);
@@ -242,18 +297,7 @@ impl SplitSystem<So3> for RigidBody {
     }
     #[inline(always)]
     fn piece_flow(&self, i: usize, t: f64, mu: &mut Vector3<f64>, g: Option<&mut So3>) {
-        let [_, p, s] = self.split_axes;
-        let [inv_r, rate_p, rate_s] = self.split_rates;
-        if i == 0 {
-            self.turn_about(p, rate_p, t, mu, g);
-        } else {
-            // R exp(tΠ̂/I_r) from the Π before the turn: it does not wait for the turn's sin_cos.
-            let g = g.map(|g| {
-                *g = g.compose_exp(&(*mu * (t * inv_r)));
-                g
-            });
-            self.turn_about(s, rate_s, t, mu, g);
-        }
+        self.split_flow(i, t, mu, g, None);
     }
 }
 

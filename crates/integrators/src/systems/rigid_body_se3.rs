@@ -211,24 +211,51 @@ impl System<Se3> for RigidBodySe3 {
     }
 }
 
-/// Four pieces: the rotations about the principal axes, `ξᵢ = ((aᵢ·Π/Iᵢ) aᵢ, 0)` (the rotation
-/// fixes aᵢ·Π), and the translation `ξ₄ = (0, P/m)` (it changes Π by a moment of P, never P);
-/// the potential (gravity gradient) is the kick. Flows by the generic exp / Ad* form.
+/// Two pieces, the free body's ([`RigidBody`]'s `SplitSystem`: a rotation about a_p, and the
+/// axisymmetric body (I_r, I_r, I_s)), the second joined by the translation `½|P|²/m`:
+///
+/// - each rotation piece moves g by a rotation Q, `(R, x) ↦ (RQ, x)`, and μ by
+///   `Ad*_(Q, 0)(Π, P) = (QᵀΠ, QᵀP)`: Π and P turn alike;
+/// - the translation, `ξ = (0, P/m)`, moves only x: `x ↦ x + (t/m) R P` (`ad*_(0, v)(Π, P) =
+///   (P × v, 0) = 0` for v ∥ P). |P|² is a Casimir of 𝔰𝔢(3)*, so the translation Poisson-commutes
+///   with every piece (RP is invariant under them) and joins piece 1 as a product of commuting
+///   flows — Strang is then the Strang splitting of the rotational perturbations alone, as for
+///   the free body on SO(3), the kinetic energy's other parts exact.
+///
+/// In place, without an exponential of 𝔰𝔢(3); the potential (gravity gradient) is the kick.
 impl SplitSystem<Se3> for RigidBodySe3 {
     #[inline]
     fn pieces(&self) -> usize {
-        4
+        2
     }
     #[inline]
     fn piece_velocity(&self, i: usize, mu: &Vector6<f64>) -> Vector6<f64> {
         let (pi, p) = split(mu);
-        if i < 3 {
-            join(
-                &self.body.principal_piece_velocity(i, &pi),
-                &Vector3::zeros(),
-            )
+        let w = self.body.piece_velocity(i, &pi);
+        if i == 0 {
+            join(&w, &Vector3::zeros())
         } else {
-            join(&Vector3::zeros(), &(p / self.mass))
+            join(&w, &(p / self.mass))
         }
+    }
+    #[inline(always)]
+    fn piece_flow(&self, i: usize, t: f64, mu: &mut Vector6<f64>, g: Option<&mut Se3>) {
+        let (mut pi, mut p) = split(mu);
+        match g {
+            Some(g) => {
+                let mut r = *g.rotation();
+                // The translation, with RP taken before the rotations (which leave it as it is).
+                let x = if i == 1 {
+                    g.translation() + r.as_matrix() * p * (t / self.mass)
+                } else {
+                    *g.translation()
+                };
+                self.body
+                    .split_flow(i, t, &mut pi, Some(&mut r), Some(&mut p));
+                *g = Se3::from_parts(r, x);
+            }
+            None => self.body.split_flow(i, t, &mut pi, None, Some(&mut p)),
+        }
+        *mu = join(&pi, &p);
     }
 }
