@@ -14,9 +14,12 @@
 //! - `trade/exact_flow`: one call of `FreeBodyFlow::advance` to T = 1, 10, 1000 (its cost does
 //!   not grow with T), with and without R.
 //! - `trade/heavy_top`: an asymmetric top 𝕀 = diag(1, 2, 3), mgχ = (0, 0.1, 0.5), h = 0.01:
-//!   hand-written RK4, `QuaternionRk4`, `Rkmk4`, Strang of the axes and kick, the exact kinetic
+//!   hand-written RK4, `QuaternionRk4`, `Rkmk4`, Strang (the body's split) and kick, the exact kinetic
 //!   flow with kicks (Strang, Blanes–Moan 4 (S6) and 6 (S10) coefficients), and the processed
 //!   Strang and kinetic–kick (Strang) splittings of each processing scheme.
+//! - `trade/satellite`: the SE(3) satellite (𝕀 = diag(1, 2, 3), m = 2, GM = 400, r ≈ 20), h = 0.01:
+//!   `Rkmk4`, Lie–Poisson Cayley θ = ½, Strang with the body's two in-place pieces, and Strang
+//!   with the four generic pieces (`Se3::exp` / Ad* flows) it replaced.
 //!
 //! Run: `cargo bench -p lie-integrators --bench splitting -- --warm-up-time 1 --measurement-time 2`.
 //! The figures are in docs/work-precision.md.
@@ -28,11 +31,12 @@ use integrators::baselines::{QuaternionRk4, Rkmk4};
 use integrators::exact::{ExactFreeBody, FreeBodyFlow};
 use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
 use integrators::processing::{Processed, ProcessingScheme};
+use integrators::splitting::SplitSystem;
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
-use integrators::systems::{HeavyTop, RigidBody};
-use integrators::{Integrator, LiePoisson};
-use lie_groups::{Cayley, ExpMap, LieGroup, So3};
-use nalgebra::Vector3;
+use integrators::systems::{HeavyTop, RigidBody, RigidBodySe3};
+use integrators::{Integrator, LiePoisson, System};
+use lie_groups::{Cayley, ExpMap, LieGroup, Se3, So3};
+use nalgebra::{Matrix3, Vector3, Vector6};
 use std::hint::black_box;
 
 const H: f64 = 0.01;
@@ -170,5 +174,90 @@ fn heavy_top(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, free_body, heavy_top);
+/// The SE(3) satellite's splitting as it was before the closed forms: four pieces (the three
+/// principal-axis rotations, the translation) by the trait's generic `Se3::exp` / Ad* flows —
+/// the same-run comparison for `RigidBodySe3`'s own two in-place pieces.
+#[derive(Clone)]
+struct FourGenericPieces(RigidBodySe3);
+
+impl System<Se3> for FourGenericPieces {
+    fn hamiltonian(&self, mu: &Vector6<f64>) -> f64 {
+        self.0.hamiltonian(mu)
+    }
+    fn velocity(&self, mu: &Vector6<f64>) -> Vector6<f64> {
+        self.0.velocity(mu)
+    }
+    fn momentum(&self, xi: &Vector6<f64>) -> Vector6<f64> {
+        self.0.momentum(xi)
+    }
+    fn has_potential(&self) -> bool {
+        self.0.has_potential()
+    }
+    fn potential(&self, g: &Se3) -> f64 {
+        self.0.potential(g)
+    }
+    fn potential_differential(&self, g: &Se3) -> Vector6<f64> {
+        self.0.potential_differential(g)
+    }
+}
+
+impl SplitSystem<Se3> for FourGenericPieces {
+    fn pieces(&self) -> usize {
+        4
+    }
+    fn piece_velocity(&self, i: usize, mu: &Vector6<f64>) -> Vector6<f64> {
+        let pi = mu.fixed_rows::<3>(0).into_owned();
+        if i < 3 {
+            let w = self.0.body().principal_piece_velocity(i, &pi);
+            Vector6::new(w.x, w.y, w.z, 0.0, 0.0, 0.0)
+        } else {
+            let v = mu.fixed_rows::<3>(3) / self.0.mass();
+            Vector6::new(0.0, 0.0, 0.0, v.x, v.y, v.z)
+        }
+    }
+}
+
+/// A satellite on SE(3) (𝕀 = diag(1, 2, 3), m = 2, GM = 400, a tumbling body started at r = 20
+/// with the circular orbit's speed; the gravity gradient exchanges energy between spin and orbit,
+/// so r wanders in 18–22 over the bench's millions of steps — at r = 5 the body would fall into
+/// the centre), h = 0.01: RKMK4 and Lie–Poisson Cayley θ = ½ on SE(3), the Strang
+/// splitting with the body's two in-place pieces and with the four generic ones.
+fn satellite(c: &mut Criterion) {
+    let sat = RigidBodySe3::satellite(
+        2.0,
+        Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
+        50.0,
+    )
+    .unwrap();
+    let g = Se3::from_parts(g0(), Vector3::new(20.0, 0.0, 0.0));
+    // Body-frame momentum of a circular orbit's velocity √(GM/r) along e₂ in space.
+    let p = g0()
+        .as_matrix()
+        .tr_mul(&Vector3::new(0.0, 2.0 * (50.0_f64 / 5.0).sqrt(), 0.0));
+    let mu0 = Vector6::new(0.5, 1.0, 0.2, p.x, p.y, p.z);
+    let mut group = c.benchmark_group("trade/satellite");
+    bench_step(
+        &mut group,
+        "rkmk4+g",
+        Rkmk4::new(sat.clone(), mu0, Some(g)).unwrap(),
+    );
+    bench_step(
+        &mut group,
+        "lp/cayley/0.5+g",
+        LiePoisson::<Se3, Cayley, _>::new(sat.clone(), 0.5, mu0, Some(g)).unwrap(),
+    );
+    bench_step(
+        &mut group,
+        "splitting-strang+g",
+        Splitting::new(sat.clone(), mu0, Some(g)).unwrap(),
+    );
+    bench_step(
+        &mut group,
+        "splitting-strang-four-generic-pieces+g",
+        Splitting::new(FourGenericPieces(sat), mu0, Some(g)).unwrap(),
+    );
+    group.finish();
+}
+
+criterion_group!(benches, free_body, heavy_top, satellite);
 criterion_main!(benches);
