@@ -525,32 +525,6 @@ fn free_body_pieces_are_an_axisymmetric_body_and_a_principal_rotation() {
     }
 }
 
-/// McLachlan's principal-axis pieces, the split the free body used before: a test-local system
-/// on `RigidBody::principal_piece_velocity` with the trait's generic exp / Ad* flows.
-#[derive(Clone, Debug)]
-struct PrincipalAxes(RigidBody);
-
-impl integrators::System<So3> for PrincipalAxes {
-    fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
-        self.0.hamiltonian(mu)
-    }
-    fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
-        self.0.velocity(mu)
-    }
-    fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {
-        self.0.momentum(xi)
-    }
-}
-
-impl SplitSystem<So3> for PrincipalAxes {
-    fn pieces(&self) -> usize {
-        3
-    }
-    fn piece_velocity(&self, i: usize, mu: &Vector3<f64>) -> Vector3<f64> {
-        self.0.principal_piece_velocity(i, mu)
-    }
-}
-
 /// The axisymmetric-plus-rotation split against the principal-axis split, Strang at h = 0.1 and
 /// 0.05 to T = 5 against the exact flow, on seven bodies from near-axisymmetric to flat: never
 /// worse (≤ 1.05×: the two tie on diag(1, 100, 101), where both are at 3e-8), at least 3× more

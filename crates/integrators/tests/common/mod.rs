@@ -291,3 +291,30 @@ impl LinearSplitting {
         ((self.a + self.b + self.c) * h).exp()
     }
 }
+
+/// McLachlan's principal-axis splitting of the free body, the split `RigidBody` used before its
+/// own (an axisymmetric body plus one rotation): three pieces on
+/// `RigidBody::principal_piece_velocity` with the trait's generic exp / Ad* flows.
+#[derive(Clone, Debug)]
+pub struct PrincipalAxes(pub integrators::systems::RigidBody);
+
+impl integrators::System<So3> for PrincipalAxes {
+    fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
+        self.0.hamiltonian(mu)
+    }
+    fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
+        self.0.velocity(mu)
+    }
+    fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {
+        self.0.momentum(xi)
+    }
+}
+
+impl integrators::splitting::SplitSystem<So3> for PrincipalAxes {
+    fn pieces(&self) -> usize {
+        3
+    }
+    fn piece_velocity(&self, i: usize, mu: &Vector3<f64>) -> Vector3<f64> {
+        self.0.principal_piece_velocity(i, mu)
+    }
+}
