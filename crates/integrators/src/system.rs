@@ -38,6 +38,18 @@ pub trait System<G: LieGroup> {
     }
     /// The Legendre map `ξ ↦ μ = ∂l/∂ξ`, the inverse of `μ ↦ ∂h/∂μ`.
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra;
+    /// The coefficients a of a diagonal quadratic Hamiltonian `h(μ) = ½ Σ aᵢ μᵢ²`, where h is one
+    /// (a rigid body in its principal axes): then `∂h/∂μ(μ) = a ∘ μ`, entry by entry and bitwise
+    /// as [`Self::velocity`] computes it. `None` (the default) says nothing about h.
+    ///
+    /// An explicit integrator reads it once per step and runs its stages on `a ∘ μ`, with no test
+    /// of the system's shape inside each stage (`QuaternionRk4`: 52.7 → 45.7 ns per step on the
+    /// free body). A system that returns `Some` must keep the identity; `tests/system_shape.rs`
+    /// checks it on the crate's systems, and that
+    /// the fast path steps bit for bit as the general one.
+    fn diagonal_velocity(&self) -> Option<G::Algebra> {
+        None
+    }
 
     /// Whether the system has a potential V(g) (then integrators require g).
     fn has_potential(&self) -> bool {

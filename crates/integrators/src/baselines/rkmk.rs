@@ -30,7 +30,7 @@
 //! is plain RK4 on μ). For fixed-size groups every quantity lives on the stack.
 
 use crate::carried_state;
-use crate::lie_poisson::check_state;
+use crate::lie_poisson::{check_state, RENORMALIZE_EVERY};
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use lie_groups::{LieGroup, Vector};
@@ -58,6 +58,8 @@ pub struct Rkmk4<G: LieGroup, S: System<G>> {
     t: f64,
     mu: G::Algebra,
     g: Option<G>,
+    /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
+    unnormalized: u32,
 }
 
 impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
@@ -70,6 +72,7 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
             t: 0.0,
             mu: mu0,
             g: g0,
+            unnormalized: 0,
         })
     }
     /// The system.
@@ -77,11 +80,17 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         &self.system
     }
 
-    /// (ξ, μ̇) = (∂h/∂μ(μ), ad*_ξ μ + F(g) + F_ext(t, g, ξ)) at a stage; g is only used with a
-    /// potential or a force that reads it.
-    #[inline]
-    fn rates(&self, t: f64, g: Option<&G>, mu: &G::Algebra) -> (G::Algebra, G::Algebra) {
-        let xi = self.system.velocity(mu);
+    /// (ξ, μ̇) = (∂h/∂μ(μ), ad*_ξ μ + F(g) + F_ext(t, g, ξ)) at a stage, ξ = `v(μ)`; g is only
+    /// used with a potential or a force that reads it.
+    #[inline(always)]
+    fn rates(
+        &self,
+        v: &impl Fn(&G::Algebra) -> G::Algebra,
+        t: f64,
+        g: Option<&G>,
+        mu: &G::Algebra,
+    ) -> (G::Algebra, G::Algebra) {
+        let xi = v(mu);
         let mut dmu = G::ad_dual_apply(&xi, mu);
         if let Some(f) = force(&self.system, g) {
             dmu = dmu.add(&f);
@@ -91,6 +100,48 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         }
         (xi, dmu)
     }
+
+    /// The four stages from (g_k, μ_k): (Θ, μ_{k+1}) with g_{k+1} = g_k exp(Θ), ξ = `v(μ)` at
+    /// every stage.
+    #[inline(always)]
+    fn stages(
+        &self,
+        v: &impl Fn(&G::Algebra) -> G::Algebra,
+        h: f64,
+        gk: &G,
+        mu: &G::Algebra,
+    ) -> (G::Algebra, G::Algebra) {
+        let half = 0.5 * h;
+        let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
+        let potential = self.system.needs_configuration();
+        // g_i = g_k exp(Θ_i), only evaluated where a force reads it.
+        let stage_g = |theta: &G::Algebra| potential.then(|| gk.compose(&G::exp(theta)));
+
+        // Stage 1: Θ₁ = 0, (d^L exp_0)⁻¹ = I.
+        let (k1, l1) = self.rates(v, t0, Some(gk), mu);
+        // Stage 2: Θ₂ = h/2 K₁.
+        let t2 = k1.scale(half);
+        let (x2, l2) = self.rates(v, tm, stage_g(&t2).as_ref(), &mu.axpy(half, &l1));
+        let k2 = dexp_inv_series::<G>(&t2, &x2);
+        // Stage 3: Θ₃ = h/2 K₂.
+        let t3 = k2.scale(half);
+        let (x3, l3) = self.rates(v, tm, stage_g(&t3).as_ref(), &mu.axpy(half, &l2));
+        let k3 = dexp_inv_series::<G>(&t3, &x3);
+        // Stage 4: Θ₄ = h K₃.
+        let t4 = k3.scale(h);
+        let (x4, l4) = self.rates(v, t1, stage_g(&t4).as_ref(), &mu.axpy(h, &l3));
+        let k4 = dexp_inv_series::<G>(&t4, &x4);
+
+        let theta = k1.add(&k2.add(&k3).scale(2.0)).add(&k4).scale(h / 6.0);
+        let mu1 = mu.axpy(h / 6.0, &l1.add(&l2.add(&l3).scale(2.0)).add(&l4));
+        (theta, mu1)
+    }
+}
+
+/// `a ∘ μ`, entry by entry: ∂h/∂μ of the diagonal quadratic `h = ½ Σ aᵢ μᵢ²`.
+#[inline(always)]
+fn hadamard<V: Vector>(a: &V, mu: &V) -> V {
+    V::from_fn(mu.dim(), |i| a.get(i) * mu.get(i))
 }
 
 /// `(I + ½ ad_Θ + (1/12) ad_Θ²) ξ = ξ + ½[Θ, ξ] + (1/12)[Θ, [Θ, ξ]]`: (d^L exp_Θ)⁻¹ ξ up to O(|Θ|⁴|ξ|).
@@ -114,10 +165,11 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
         let mu = &carried_state::read(&self.mu);
         let Some(gk) = self.g.as_ref() else {
             // μ alone: plain RK4 on μ̇ = ad*_ξ μ (no potential, checked at construction).
-            let (_, l1) = self.rates(t0, None, mu);
-            let (_, l2) = self.rates(tm, None, &mu.axpy(half, &l1));
-            let (_, l3) = self.rates(tm, None, &mu.axpy(half, &l2));
-            let (_, l4) = self.rates(t1, None, &mu.axpy(h, &l3));
+            let v = |mu: &G::Algebra| self.system.velocity(mu);
+            let (_, l1) = self.rates(&v, t0, None, mu);
+            let (_, l2) = self.rates(&v, tm, None, &mu.axpy(half, &l1));
+            let (_, l3) = self.rates(&v, tm, None, &mu.axpy(half, &l2));
+            let (_, l4) = self.rates(&v, t1, None, &mu.axpy(h, &l3));
             let mu1 = mu.axpy(h / 6.0, &l1.add(&l2.add(&l3).scale(2.0)).add(&l4));
             if !mu1.is_finite() {
                 return Err(IntegratorError::NonFinite {
@@ -128,33 +180,23 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
             self.t += h;
             return Ok(());
         };
-        let potential = self.system.needs_configuration();
-        // g_i = g_k exp(Θ_i), only evaluated where a force reads it.
-        let stage_g = |theta: &G::Algebra| potential.then(|| gk.compose(&G::exp(theta)));
-
-        // Stage 1: Θ₁ = 0, (d^L exp_0)⁻¹ = I.
-        let (k1, l1) = self.rates(t0, Some(gk), mu);
-        // Stage 2: Θ₂ = h/2 K₁.
-        let t2 = k1.scale(half);
-        let (x2, l2) = self.rates(tm, stage_g(&t2).as_ref(), &mu.axpy(half, &l1));
-        let k2 = dexp_inv_series::<G>(&t2, &x2);
-        // Stage 3: Θ₃ = h/2 K₂.
-        let t3 = k2.scale(half);
-        let (x3, l3) = self.rates(tm, stage_g(&t3).as_ref(), &mu.axpy(half, &l2));
-        let k3 = dexp_inv_series::<G>(&t3, &x3);
-        // Stage 4: Θ₄ = h K₃.
-        let t4 = k3.scale(h);
-        let (x4, l4) = self.rates(t1, stage_g(&t4).as_ref(), &mu.axpy(h, &l3));
-        let k4 = dexp_inv_series::<G>(&t4, &x4);
-
-        let theta = k1.add(&k2.add(&k3).scale(2.0)).add(&k4).scale(h / 6.0);
-        let mu1 = mu.axpy(h / 6.0, &l1.add(&l2.add(&l3).scale(2.0)).add(&l4));
+        // The system's shape is tested once per step, not in each stage (see
+        // `System::diagonal_velocity`).
+        let (theta, mu1) = match self.system.diagonal_velocity() {
+            Some(a) => self.stages(&|mu: &G::Algebra| hadamard(&a, mu), h, gk, mu),
+            None => self.stages(&|mu: &G::Algebra| self.system.velocity(mu), h, gk, mu),
+        };
         if !theta.is_finite() || !mu1.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "RKMK4 stage (Θ, μ)",
             });
         }
-        let g1 = gk.compose(&G::exp(&theta)).normalize();
+        // g_k exp(Θ) in increment form, g_k + g_k (exp Θ − I): g stays on G up to a random walk
+        // of roundings, renormalized every RENORMALIZE_EVERY steps (a polar step at each cost
+        // the free body's step 7 ns, 15 % of it, and rounds g a second time).
+        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
+        let g1 = G::exp_compose(gk, &theta);
+        let g1 = if renormalize { g1.normalize() } else { g1 };
         if !g1.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "configuration g_{k+1}",
@@ -163,6 +205,11 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
         self.g = Some(g1);
         self.mu = mu1;
         self.t += h;
+        self.unnormalized = if renormalize {
+            0
+        } else {
+            self.unnormalized + 1
+        };
         Ok(())
     }
     fn time(&self) -> f64 {

@@ -176,6 +176,11 @@ impl System<So3> for HeavyTop {
     fn hessian(&self, mu: &Vector3<f64>) -> Matrix3<f64> {
         self.body.hessian(mu)
     }
+    /// The body's ([`RigidBody`]'s `diagonal_velocity`): V(R) does not enter ∂h/∂Π.
+    #[inline]
+    fn diagonal_velocity(&self) -> Option<Vector3<f64>> {
+        self.body.diagonal_velocity()
+    }
     /// Π = 𝕀Ω.
     #[inline]
     fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {

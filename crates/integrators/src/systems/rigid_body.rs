@@ -117,6 +117,11 @@ impl System<So3> for RigidBody {
     fn hessian(&self, mu: &Vector3<f64>) -> Matrix3<f64> {
         self.inner.hessian(mu)
     }
+    /// `(1/I₁, 1/I₂, 1/I₃)` for a diagonal 𝕀: Ω = 𝕀⁻¹Π is then `Πᵢ/Iᵢ`.
+    #[inline]
+    fn diagonal_velocity(&self) -> Option<Vector3<f64>> {
+        self.diagonal.then_some(self.inv_moments)
+    }
     /// Π = 𝕀Ω.
     #[inline]
     fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {
