@@ -219,7 +219,7 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     }
     /// `g_{k+1} = g_k τ(θη) τ((1−θ)η)` in one product (`Tau::compose_tau_split`), not
     /// renormalized.
-    #[inline]
+    #[inline(always)]
     fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
         T::compose_tau_split(gk, self.theta(), eta)
     }

@@ -69,11 +69,12 @@ pub const SLOTS: usize = 9;
 struct Slot<G: LieGroup> {
     /// The step size the contents belong to (NaN: free).
     h: f64,
-    /// ξ of the last steps of size h in a ring: the newest at `newest`, then older ones at
-    /// `newest − 1, …` (mod [`DEPTH`]), the `count` newest of them valid. A ring, so recording one
-    /// writes one slot (in place: `clone_from` keeps a heap vector's buffer) instead of shifting
-    /// them all.
-    past: [G::Algebra; DEPTH],
+    /// ξ of the last steps of size h in a ring, kept twice: the newest at `newest` and at
+    /// `newest + DEPTH`, then older ones at `newest − 1, …` (mod [`DEPTH`]), the `count` newest of
+    /// them valid. A ring, so recording one writes one entry (twice; in place: `clone_from` keeps
+    /// a heap vector's buffer) instead of shifting them all; twice, so the last [`DEPTH`] are
+    /// always the window `newest + 1 ..= newest + DEPTH`, read without wrapping indices.
+    past: [G::Algebra; 2 * DEPTH],
     newest: usize,
     count: usize,
     /// The time the newest solution was recorded at, and the spacing of the valid ones.
@@ -119,15 +120,10 @@ impl<G: LieGroup> Slot<G> {
         self.rate = f64::NAN;
     }
 
-    /// The solution recorded `age` (< [`DEPTH`]) steps ago (0: the last one).
+    /// The last [`DEPTH`] solutions, oldest first (the newest last).
     #[inline(always)]
-    fn past(&self, age: usize) -> &G::Algebra {
-        let i = if self.newest >= age {
-            self.newest - age
-        } else {
-            self.newest + DEPTH - age
-        };
-        &self.past[i]
+    fn window(&self) -> &[G::Algebra] {
+        &self.past[self.newest + 1..=self.newest + DEPTH]
     }
 
     /// The contraction prior of the kept matrix (see [`WarmStart::prior_contraction`]).
@@ -234,14 +230,11 @@ impl<G: LieGroup> WarmStart<G> {
         if slot.count < DEPTH {
             return None;
         }
-        let (x1, x2, x3, x4, x5, x6) = (
-            slot.past(0),
-            slot.past(1),
-            slot.past(2),
-            slot.past(3),
-            slot.past(4),
-            slot.past(5),
-        );
+        let [x6, x5, x4, x3, x2, x1] = slot.window() else {
+            return None;
+        };
+        // The newest, stored by the last step, entry by entry (crate::carried_state).
+        let x1 = &crate::carried_state::read(x1);
         // 6(ξ₁ + ξ₅) − 15(ξ₂ + ξ₄) + 20ξ₃ − ξ₆
         Some(
             x1.add(x5)
@@ -314,6 +307,7 @@ impl<G: LieGroup> WarmStart<G> {
             slot.newest + 1
         };
         slot.past[slot.newest].clone_from(xi);
+        slot.past[slot.newest + DEPTH].clone_from(xi);
         match contraction {
             Some((rho, bound)) => {
                 slot.rate = if jacobians == 0 { bound } else { f64::NAN };

@@ -729,7 +729,7 @@ impl LieGroup for So3 {
         adjoint_increment(w, v, a, b)
     }
     /// `R exp ω = R + R (a ω̂ + b ω̂²)`: the increment formed without the identity, R rounded once.
-    #[inline]
+    #[inline(always)]
     fn exp_compose(g: &Self, w: &Vector3<f64>) -> Self {
         let (a, b) = exp_coeffs(w.norm_squared());
         Self {
@@ -795,7 +795,7 @@ impl LieGroup for So3 {
     #[allow(clippy::eq_op)] // x − x is the point: 0 for finite x, NaN for NaN and ±∞
     fn is_finite(&self) -> bool {
         // Branch-free: x − x is 0 for finite x, NaN otherwise.
-        self.r.iter().fold(0.0, |s, x| s + (x - x)) == 0.0
+        self.r.iter().fold(true, |ok, x| ok & x.is_finite())
     }
     #[inline]
     fn matrix_distance(&self, other: &Self) -> f64 {
@@ -846,7 +846,7 @@ impl CayleyGroup for So3 {
     /// 2·atan(…) ≈ 141°, far beyond any integrator step); beyond it, the two products. The
     /// coefficients of `cay(ω/den) − I = A ω̂ + B ω̂²` come from `cay_split_coeffs` (one
     /// division, shared with [`CayleyGroup::cay_split_coadjoint_increment`] of the same step).
-    #[inline]
+    #[inline(always)]
     fn cay_split_compose(g: &Self, theta: f64, w: &Vector3<f64>) -> Self {
         match cay_split_coeffs(theta, w) {
             Some((a, b)) => Self {

@@ -188,7 +188,7 @@ impl<G: LieGroup> Tau<G> for ExpMap {
         G::exp_compose(g, xi)
     }
     /// `g exp(θξ) exp((1−θ)ξ) = g exp(ξ)`.
-    #[inline]
+    #[inline(always)]
     fn compose_tau_split(g: &G, _theta: f64, xi: &G::Algebra) -> G {
         G::exp_compose(g, xi)
     }
@@ -335,7 +335,7 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     fn compose_tau(g: &G, xi: &G::Algebra) -> G {
         G::cay_compose(g, xi)
     }
-    #[inline]
+    #[inline(always)]
     fn compose_tau_split(g: &G, theta: f64, xi: &G::Algebra) -> G {
         G::cay_split_compose(g, theta, xi)
     }

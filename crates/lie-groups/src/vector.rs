@@ -140,7 +140,7 @@ impl<const N: usize> Vector for SVector<f64, N> {
     #[inline]
     #[allow(clippy::eq_op)] // x − x is the point
     fn is_finite(&self) -> bool {
-        self.iter().fold(0.0, |s, x| s + (x - x)) == 0.0
+        self.iter().fold(true, |ok, x| ok & x.is_finite())
     }
 }
 
