@@ -115,7 +115,7 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
         let potential = self.system.needs_configuration();
         // g_i = g_k exp(Θ_i), only evaluated where a force reads it.
-        let stage_g = |theta: &G::Algebra| potential.then(|| gk.compose(&G::exp(theta)));
+        let stage_g = |theta: &G::Algebra| potential.then(|| G::exp_compose(gk, theta));
 
         // Stage 1: Θ₁ = 0, (d^L exp_0)⁻¹ = I.
         let (k1, l1) = self.rates(v, t0, Some(gk), mu);
