@@ -10,6 +10,9 @@
 //! - `heavy_top/step`: the heavy top (reconstruction is required).
 //! - `so_n/step`: the generalized rigid body (Euler–Arnold geodesic) on SO(n), n = 10, 20, 50.
 //!
+//! The free body and the heavy top also step the hand-written nalgebra RK4 on (q, Π) of
+//! `benches/common/hand_rk4.rs` (`rk4-hand-written+g`), the plain competitor, in the same run.
+//!
 //! Each benchmark steps one integrator along its trajectory (`step(h)` per iteration); the motion
 //! is bounded, so the cost per step is stationary. Run:
 //! `cargo bench -p lie-integrators --bench integrators -- --warm-up-time 1 --measurement-time 2`.
@@ -24,8 +27,17 @@ use lie_groups::{Cayley, ExpMap, LieGroup, So3, SoN, Tau, Vector};
 use nalgebra::Vector3;
 use std::hint::black_box;
 
+#[path = "common/hand_rk4.rs"]
+mod hand_rk4;
+use hand_rk4::HandRk4;
+
 const H: f64 = 0.01;
 const THETAS: [f64; 3] = [0.0, 0.5, 1.0];
+
+/// R₀ of the SO(3) benchmarks (the hand-written RK4 starts from its quaternion).
+fn g0() -> So3 {
+    So3::exp(&Vector3::new(0.3, -0.5, 0.8))
+}
 
 fn bench_step<I: Integrator>(group: &mut BenchmarkGroup<'_, WallTime>, id: &str, mut integ: I) {
     group.bench_function(id, |b| b.iter(|| integ.step(black_box(H)).unwrap()));
@@ -37,7 +49,7 @@ fn so3_methods<S: System<So3> + Clone, T: Tau<So3>>(
     pi0: Vector3<f64>,
     reconstruct: bool,
 ) {
-    let g0 = reconstruct.then(|| So3::exp(&Vector3::new(0.3, -0.5, 0.8)));
+    let g0 = reconstruct.then(g0);
     let suffix = if reconstruct { "+g" } else { "-g" };
     for theta in THETAS {
         let lp = LiePoisson::<So3, T, _>::new(system.clone(), theta, pi0, g0).unwrap();
@@ -55,7 +67,7 @@ fn baselines<S: System<So3> + Clone>(
     pi0: Vector3<f64>,
     reconstruct: bool,
 ) {
-    let g0 = reconstruct.then(|| So3::exp(&Vector3::new(0.3, -0.5, 0.8)));
+    let g0 = reconstruct.then(g0);
     let suffix = if reconstruct { "+g" } else { "-g" };
     let rk4 = QuaternionRk4::new(system.clone(), pi0, g0).unwrap();
     bench_step(group, &format!("rk4-quaternion{suffix}"), rk4);
@@ -67,6 +79,9 @@ fn rigid_body(c: &mut Criterion) {
     let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let mut group = c.benchmark_group("rigid_body/step");
+    // The plain competitor in the same run (benches/common/hand_rk4.rs).
+    let mut hand = HandRk4::<false>::new([1.0, 2.0, 3.0], Vector3::zeros(), pi0, g0().as_matrix());
+    group.bench_function("rk4-hand-written+g", |b| b.iter(|| hand.step(black_box(H))));
     for reconstruct in [true, false] {
         baselines(&mut group, &body, pi0, reconstruct);
         so3_methods::<_, Cayley>(&mut group, &body, pi0, reconstruct);
@@ -75,7 +90,7 @@ fn rigid_body(c: &mut Criterion) {
     group.finish();
 
     let mut group = c.benchmark_group("rigid_body/solver");
-    let g0 = Some(So3::exp(&Vector3::new(0.3, -0.5, 0.8)));
+    let g0 = Some(g0());
     for (name, kind) in [
         ("simplified-newton", SolverKind::SimplifiedNewton),
         ("newton", SolverKind::Newton),
@@ -121,6 +136,9 @@ fn heavy_top(c: &mut Criterion) {
     let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 1.0, Vector3::new(0.0, 0.1, 0.5)).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let mut group = c.benchmark_group("heavy_top/step");
+    let mgchi = Vector3::new(0.0, 0.1, 0.5);
+    let mut hand = HandRk4::<true>::new([1.0, 2.0, 3.0], mgchi, pi0, g0().as_matrix());
+    group.bench_function("rk4-hand-written+g", |b| b.iter(|| hand.step(black_box(H))));
     baselines(&mut group, &top, pi0, true);
     so3_methods::<_, Cayley>(&mut group, &top, pi0, true);
     so3_methods::<_, ExpMap>(&mut group, &top, pi0, true);

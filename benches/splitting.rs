@@ -58,13 +58,7 @@ fn hand_rk4<const GRAVITY: bool>(
     mgchi: Vector3<f64>,
     pi0: Vector3<f64>,
 ) -> HandRk4<GRAVITY> {
-    let r = nalgebra::Rotation3::from_matrix_unchecked(*g0().as_matrix());
-    HandRk4 {
-        inv_i: Vector3::from(moments).map(|i| 1.0 / i),
-        mgchi,
-        q: nalgebra::UnitQuaternion::from_rotation_matrix(&r).into_inner(),
-        pi: pi0,
-    }
+    HandRk4::new(moments, mgchi, pi0, g0().as_matrix())
 }
 
 fn free_body(c: &mut Criterion) {

@@ -66,28 +66,16 @@ fn run<S: System<So3> + Clone + integrators::splitting::SplitSystem<So3>>(
     let scheme = |name: &str| name.parse::<ProcessingScheme>();
     match parts.as_slice() {
         ["rk4-hand"] => {
-            let r = nalgebra::Rotation3::from_matrix_unchecked(*g0().as_matrix());
-            let q = nalgebra::UnitQuaternion::from_rotation_matrix(&r).into_inner();
-            let inv_i = Vector3::new(1.0, 0.5, 1.0 / 3.0);
+            let moments = [1.0, 2.0, 3.0];
             // As in the bench: the free body's hand-written step has no gravity code at all.
             if mgchi == Vector3::zeros() {
-                let mut hand = HandRk4::<false> {
-                    inv_i,
-                    mgchi,
-                    q,
-                    pi: pi0,
-                };
+                let mut hand = HandRk4::<false>::new(moments, mgchi, pi0, g0().as_matrix());
                 for _ in 0..n {
                     hand.step(black_box(H));
                 }
                 Ok(hand.pi[0])
             } else {
-                let mut hand = HandRk4::<true> {
-                    inv_i,
-                    mgchi,
-                    q,
-                    pi: pi0,
-                };
+                let mut hand = HandRk4::<true>::new(moments, mgchi, pi0, g0().as_matrix());
                 for _ in 0..n {
                     hand.step(black_box(H));
                 }

@@ -1,7 +1,7 @@
 //! The plain competitor of the trade, shared by `benches/splitting.rs` and
 //! `examples/step_cost.rs`: classical RK4 on (q, Π) written as anyone would with nalgebra.
 
-use nalgebra::{Quaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 /// The plain competitor: classical RK4 on (q, Π) ∈ ℝ⁴ × ℝ³ for a body with principal moments
 /// `1/inv_i` and a constant body-frame gravity arm `mgchi` (zero for the free body), written as
@@ -24,6 +24,21 @@ pub struct HandRk4<const GRAVITY: bool> {
 }
 
 impl<const GRAVITY: bool> HandRk4<GRAVITY> {
+    /// The body with principal moments `moments` and gravity arm `mgchi` at Π₀ and attitude R₀.
+    pub fn new(
+        moments: [f64; 3],
+        mgchi: Vector3<f64>,
+        pi0: Vector3<f64>,
+        r0: &Matrix3<f64>,
+    ) -> Self {
+        let r = Rotation3::from_matrix_unchecked(*r0);
+        Self {
+            inv_i: Vector3::from(moments).map(|i| 1.0 / i),
+            mgchi,
+            q: UnitQuaternion::from_rotation_matrix(&r).into_inner(),
+            pi: pi0,
+        }
+    }
     #[inline]
     fn rate(&self, q: &Quaternion<f64>, pi: &Vector3<f64>) -> (Quaternion<f64>, Vector3<f64>) {
         let omega = pi.component_mul(&self.inv_i);
