@@ -144,6 +144,20 @@ impl<S: System<So3>> QuaternionRk4<S> {
         )
     }
 
+    /// [`Self::attitude_step`] with Ω = ∂h/∂Π from [`System::velocity`]: the step of a system
+    /// that declares no diagonal h, out of line so that the common step stays small enough for
+    /// the compiler to inline the system's force into its stages (inline, it took the heavy top's
+    /// step in `lie-sim` from 72 to 87 ns).
+    #[inline(never)]
+    fn general_attitude_step(
+        &self,
+        h: f64,
+        q: Quaternion<f64>,
+        pi: Vector3<f64>,
+    ) -> (Quaternion<f64>, Vector3<f64>) {
+        self.attitude_step(&|pi| self.system.velocity(pi), h, q, pi)
+    }
+
     /// `(q̇, Π̇)` at a stage, Ω = `v(Π)`.
     #[inline(always)]
     fn rate(
@@ -211,7 +225,7 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
                 // step on the free body, where the test inside the stages kept both arms alive).
                 let (q1, pi1) = match self.system.diagonal_velocity() {
                     Some(a) => self.attitude_step(&|pi| pi.component_mul(&a), h, q, pi),
-                    None => self.attitude_step(&|pi| self.system.velocity(pi), h, q, pi),
+                    None => self.general_attitude_step(h, q, pi),
                 };
                 let n = q1.norm();
                 if !(Vector::is_finite(&pi1) && n.is_finite() && n > 0.0) {
