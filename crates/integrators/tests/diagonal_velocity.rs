@@ -4,6 +4,7 @@
 //! general path through `System::velocity`.
 
 use integrators::baselines::{QuaternionRk4, Rkmk4};
+use integrators::forces::{BodyTorque, Forced};
 use integrators::systems::{HeavyTop, RigidBody};
 use integrators::{Integrator, System};
 use lie_groups::{LieGroup, So3};
@@ -89,6 +90,12 @@ fn diagonal_bodies_declare_their_velocity_bitwise_and_others_nothing() {
         top.body().diagonal_velocity(),
         "the heavy top's h is its body's"
     );
+    // An external torque does not enter h: the forced body declares the body's a.
+    let torqued = Forced::new(
+        bodies[0].clone(),
+        BodyTorque::<So3>::constant(Vector3::new(0.1, 0.0, -0.2)).unwrap(),
+    );
+    assert_eq!(torqued.diagonal_velocity(), bodies[0].diagonal_velocity());
     // A full inertia tensor (its principal axes are not the body axes) declares nothing.
     let tilted = Matrix3::new(2.0, 0.3, 0.0, 0.3, 1.5, -0.2, 0.0, -0.2, 1.0);
     assert!(RigidBody::new(tilted)

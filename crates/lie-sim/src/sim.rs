@@ -924,6 +924,9 @@ impl<G: LieGroup, S: integrators::System<G>> integrators::System<G> for WithCasi
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra {
         self.inner.momentum(xi)
     }
+    fn diagonal_velocity(&self) -> Option<G::Algebra> {
+        self.inner.diagonal_velocity()
+    }
     fn casimir(&self, mu: &G::Algebra) -> Option<f64> {
         Some((self.casimir)(mu))
     }

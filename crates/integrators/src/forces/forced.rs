@@ -42,6 +42,10 @@ impl<G: LieGroup, S: System<G>, F: ExternalForce<G>> System<G> for Forced<S, F> 
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra {
         self.system.momentum(xi)
     }
+    /// The unforced system's: F_ext does not enter h.
+    fn diagonal_velocity(&self) -> Option<G::Algebra> {
+        self.system.diagonal_velocity()
+    }
     fn has_potential(&self) -> bool {
         self.system.has_potential()
     }
