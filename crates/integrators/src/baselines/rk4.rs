@@ -221,7 +221,7 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
             }
             Some(q) => {
                 // The system's shape is tested once per step, not in each stage: a diagonal
-                // quadratic h (a body in principal axes) steps with Ω = a ∘ Π (52.7 → 45.7 ns per
+                // quadratic h (a body in principal axes) steps with Ω = a ∘ Π (52.7 → 47.1 ns per
                 // step on the free body, where the test inside the stages kept both arms alive).
                 let (q1, pi1) = match self.system.diagonal_velocity() {
                     Some(a) => self.attitude_step(&|pi| pi.component_mul(&a), h, q, pi),
