@@ -230,6 +230,7 @@ impl<G: LieGroup> WarmStart<G> {
         if slot.count < DEPTH {
             return None;
         }
+        // The window always holds DEPTH entries: the `else` arm is never taken.
         let [x6, x5, x4, x3, x2, x1] = slot.window() else {
             return None;
         };

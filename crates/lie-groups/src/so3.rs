@@ -792,9 +792,8 @@ impl LieGroup for So3 {
         d
     }
     #[inline]
-    #[allow(clippy::eq_op)] // x − x is the point: 0 for finite x, NaN for NaN and ±∞
     fn is_finite(&self) -> bool {
-        // Branch-free: x − x is 0 for finite x, NaN otherwise.
+        // Branch-free: the AND of the nine entries' own tests (see the vectors' `is_finite`).
         self.r.iter().fold(true, |ok, x| ok & x.is_finite())
     }
     #[inline]
