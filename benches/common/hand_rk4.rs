@@ -1,12 +1,14 @@
-//! The plain competitor of the trade, shared by `benches/splitting.rs` and
-//! `examples/step_cost.rs`: classical RK4 on (q, Π) written as anyone would with nalgebra.
+//! The plain competitor of the trade, shared by `benches/splitting.rs`, `benches/integrators.rs`,
+//! `examples/step_cost.rs` and `tests/hand_rk4.rs`: classical RK4 on (q, Π) written as anyone
+//! would with nalgebra.
 
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 /// The plain competitor: classical RK4 on (q, Π) ∈ ℝ⁴ × ℝ³ for a body with principal moments
 /// `1/inv_i` and a constant body-frame gravity arm `mgchi` (zero for the free body), written as
-/// anyone would with nalgebra: `q̇ = ½ q ⊗ (0, Ω)`, `Π̇ = Π × Ω + mgχ × Rᵀe₃`, q renormalised
-/// once per step.
+/// anyone would with nalgebra: `q̇ = ½ q ⊗ (0, Ω)`, `Π̇ = Π × Ω + Rᵀe₃ × mgχ` (the heavy top's
+/// `Π̇ = Π × Ω + m g Γ × χ`, Γ = Rᵀe₃), q renormalised once per step. `tests/hand_rk4.rs` checks
+/// that it follows `QuaternionRk4`'s trajectory.
 ///
 /// `GRAVITY` is a compile-time switch, as a hand-written free-body step simply has no gravity
 /// code: a run-time `mgχ ≠ 0` test in each stage costs the free-body step ~40 % (it was
@@ -53,7 +55,7 @@ impl<const GRAVITY: bool> HandRk4<GRAVITY> {
                 2.0 * (y * z + w * x),
                 w * w - x * x - y * y + z * z,
             ) * s;
-            dpi += self.mgchi.cross(&up);
+            dpi += up.cross(&self.mgchi);
         }
         (dq, dpi)
     }
