@@ -61,23 +61,27 @@ fn quaternion_rate(q: &Quaternion<f64>, omega: &Vector3<f64>) -> Quaternion<f64>
 
 /// The rotation R(q/|q|) of a nonzero quaternion, from the homogeneous form
 /// `R = (1/|q|²)·[(w² − |v|²)I + 2vvᵀ + 2w v̂]`, q = (w, v): no square root, one division.
+///
+/// The products of q's entries are formed before they are scaled by s = 2/|q|², so the division
+/// runs beside them instead of ahead of them: in a stage of a system with a potential, R is on
+/// the step's critical path (the force at the next stage waits for it).
 #[inline]
 fn rotation(q: &Quaternion<f64>) -> So3 {
     let (w, x, y, z) = (q.w, q.i, q.j, q.k);
     let s = 2.0 / (w * w + x * x + y * y + z * z);
-    let (wx, wy, wz) = (s * w * x, s * w * y, s * w * z);
-    let (xx, xy, xz) = (s * x * x, s * x * y, s * x * z);
-    let (yy, yz, zz) = (s * y * y, s * y * z, s * z * z);
+    let (wx, wy, wz) = (w * x, w * y, w * z);
+    let (xx, xy, xz) = (x * x, x * y, x * z);
+    let (yy, yz, zz) = (y * y, y * z, z * z);
     So3::from_matrix_unchecked(&Matrix3::new(
-        1.0 - (yy + zz),
-        xy - wz,
-        xz + wy,
-        xy + wz,
-        1.0 - (xx + zz),
-        yz - wx,
-        xz - wy,
-        yz + wx,
-        1.0 - (xx + yy),
+        1.0 - (yy + zz) * s,
+        (xy - wz) * s,
+        (xz + wy) * s,
+        (xy + wz) * s,
+        1.0 - (xx + zz) * s,
+        (yz - wx) * s,
+        (xz - wy) * s,
+        (yz + wx) * s,
+        1.0 - (xx + yy) * s,
     ))
 }
 
