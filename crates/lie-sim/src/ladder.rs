@@ -4,12 +4,18 @@
 //! largest of the initial body angular velocity |ξ₀| (|Ω₀| = |𝕀⁻¹Π₀| for the rigid body) and the
 //! frequencies of the potential (the heavy top's pendulum, the satellite's orbit, the planar
 //! body's spring). The ladder starts at h₀ = 1/ω (h₀ω = 1, near the stability edge of the explicit
-//! methods and where every method's error is of order one; h₀ ≤ T) and halves down to the step
-//! where the highest-order candidate (order [`HIGHEST_ORDER`]) is predicted to reach the reference
-//! floor over the horizon, `(hω)^p · max(1, ωT) = `[`REFERENCE_FLOOR`] — finer steps only measure
-//! the lower-order methods at a higher cost — with at least 2 and at most [`MAX_AUTO_LEVELS`]
-//! levels (`--levels` fixes the count instead; without it, the finest levels are dropped, down to
-//! two, when the trade would exceed the work limits of [`crate::bounds`]). A scene at rest (ω = 0) has no time scale of its
+//! methods and where every method's error is of order one; h₀ ≤ T) and divides it by the ratio r
+//! (`--ratio`, [`DEFAULT_RATIO`] = 2: it halves) down to the step where the highest-order candidate
+//! (order [`HIGHEST_ORDER`]) is predicted to reach the reference floor over the horizon,
+//! `(hω)^p · max(1, ωT) = `[`REFERENCE_FLOOR`] — finer steps only measure the lower-order methods
+//! at a higher cost — with at least 2 levels and at most the span of [`MAX_AUTO_LEVELS`] halvings'
+//! levels ([`max_levels`]; `--levels` fixes the count instead; without it, the finest levels are
+//! dropped, down to two, when the trade would exceed the work limits of [`crate::bounds`]).
+//!
+//! **The ratio.** The cheapest run that reaches a target is a ladder point: between two points a
+//! method's error falls by r^p, so the run picked may be up to r^p more accurate, and r times
+//! dearer, than the target needs, and which method that penalises most depends on where its points
+//! fall. A ratio of √2 (`--ratio 1.41`) halves that granularity at about twice the runs. A scene at rest (ω = 0) has no time scale of its
 //! own: its ladder starts at the scene's step h instead.
 //!
 //! **Explicit ladder.** `--steps 0.1,0.05,0.02`: exactly these steps, in this order; each finite,
@@ -26,8 +32,23 @@ pub const REFERENCE_FLOOR: f64 = 1e-13;
 /// The highest order among the trade's candidates (Kahan–Li's order-8 composition).
 pub const HIGHEST_ORDER: i32 = 8;
 
-/// The most levels the automatic ladder takes.
+/// The most levels the automatic ladder takes at the default ratio 2 (nine halvings).
 pub const MAX_AUTO_LEVELS: usize = 10;
+
+/// The ratio of successive steps of the automatic ladder unless `--ratio` says otherwise.
+pub const DEFAULT_RATIO: f64 = 2.0;
+
+/// The range `--ratio` accepts: finer than 1.1 multiplies the runs for no new information, coarser
+/// than 16 leaves an order-4 method 16⁴ apart between points.
+pub const RATIO_RANGE: std::ops::RangeInclusive<f64> = 1.1..=16.0;
+
+/// The most levels of the automatic ladder with ratio r: those spanning the same range as
+/// [`MAX_AUTO_LEVELS`] levels of ratio 2, `1 + ⌈9 ln 2 / ln r⌉` (10 at r = 2, 19 at r = √2).
+pub fn max_levels(ratio: f64) -> usize {
+    let span = (MAX_AUTO_LEVELS - 1) as f64 * std::f64::consts::LN_2;
+    // Less 1e-9 so that the rounding of the quotient cannot add a level (r = 2: exactly nine).
+    1 + (span / ratio.ln() - 1e-9).ceil().max(1.0) as usize
+}
 
 /// The value of `--steps`, parsed by [`parse_steps`].
 #[derive(Debug, Clone, PartialEq)]
@@ -159,9 +180,9 @@ fn own_rate(system: &System, xi0: &[f64]) -> f64 {
     }
 }
 
-/// The automatic ladder of the module page for `scene`; `levels` replaces the computed count.
-/// ξ₀ is the scene's own integrator's initial velocity.
-pub fn automatic(scene: &Scene, levels: Option<usize>) -> Result<Ladder, SimError> {
+/// The automatic ladder of the module page for `scene`, successive steps `ratio` apart; `levels`
+/// replaces the computed count. ξ₀ is the scene's own integrator's initial velocity.
+pub fn automatic(scene: &Scene, levels: Option<usize>, ratio: f64) -> Result<Ladder, SimError> {
     let sim = build(
         &scene.system,
         &scene.method,
@@ -169,13 +190,27 @@ pub fn automatic(scene: &Scene, levels: Option<usize>) -> Result<Ladder, SimErro
         &scene.solver,
     )?;
     let omega = characteristic_rate(&scene.system, &sim.velocity());
-    Ok(automatic_for(omega, scene.duration, scene.step, levels))
+    Ok(automatic_for(
+        omega,
+        scene.duration,
+        scene.step,
+        levels,
+        ratio,
+    ))
 }
 
-/// The ladder for rate ω over horizon T (`step`: the scene's, used when ω = 0).
-pub fn automatic_for(omega: f64, duration: f64, step: f64, levels: Option<usize>) -> Ladder {
+/// The ladder for rate ω over horizon T (`step`: the scene's, used when ω = 0), successive
+/// steps `ratio` apart (in [`RATIO_RANGE`]).
+pub fn automatic_for(
+    omega: f64,
+    duration: f64,
+    step: f64,
+    levels: Option<usize>,
+    ratio: f64,
+) -> Ladder {
     let resting = !(omega.is_finite() && omega > 0.0);
     let top = if resting { step } else { 1.0 / omega }.min(duration);
+    let most = max_levels(ratio);
     let count = levels.unwrap_or_else(|| {
         if resting {
             return 2;
@@ -184,25 +219,32 @@ pub fn automatic_for(omega: f64, duration: f64, step: f64, levels: Option<usize>
         let h_floor = (REFERENCE_FLOOR / (omega * duration).max(1.0))
             .powf(1.0 / f64::from(HIGHEST_ORDER))
             / omega;
-        let halvings = (top / h_floor).log2().ceil().max(0.0) as usize;
-        (halvings + 1).clamp(2, MAX_AUTO_LEVELS)
+        let divisions = ((top / h_floor).log2() / ratio.log2()).ceil().max(0.0) as usize;
+        (divisions + 1).clamp(2, most)
     });
-    let steps: Vec<f64> = (0..count).map(|k| top / f64::powi(2.0, k as i32)).collect();
+    let steps: Vec<f64> = (0..count).map(|k| top / ratio.powi(k as i32)).collect();
+    let divided = if ratio == 2.0 {
+        "halved".to_string()
+    } else {
+        format!("divided by {ratio}")
+    };
     let rule = if resting {
         format!(
-            "the scene is at rest (ω = 0): h = {step:e} … h/2^{} from its step",
+            "the scene is at rest (ω = 0): h = {step:e} … h/{ratio}^{} from its step",
             count - 1
         )
     } else {
         format!(
-            "ω = {omega:.4e} rad/s: h = {:.4e} (hω = {:.2}) halved {} times{}",
+            "ω = {omega:.4e} rad/s: h = {:.4e} (hω = {:.2}) {divided} {} times{}",
             top,
             top * omega,
             count - 1,
             if levels.is_some() {
-                " (--levels)"
+                " (--levels)".to_string()
             } else {
-                " (down to the highest order at the reference floor, at most 10 levels)"
+                format!(
+                    " (down to the highest order at the reference floor, at most {most} levels)"
+                )
             }
         )
     };
@@ -258,26 +300,52 @@ mod tests {
     fn the_ladder_starts_at_h_omega_one_and_stops_where_order_8_meets_the_floor() {
         // ω = 1, T = 10: h_floor = (1e-14)^{1/8} = 10^{-1.75} = 0.0178, 1/0.0178 = 2^5.81: six
         // halvings, seven levels.
-        let l = automatic_for(1.0, 10.0, 0.1, None);
+        let l = automatic_for(1.0, 10.0, 0.1, None, 2.0);
         assert_eq!(l.steps.len(), 7);
         assert_eq!(l.steps[0], 1.0);
         assert_eq!(l.steps[6], 1.0 / 64.0);
         // Ten times faster: ten times smaller steps, and h_floor·ω = (1e-15)^{1/8} one level more.
-        let fast = automatic_for(10.0, 10.0, 0.1, None);
+        let fast = automatic_for(10.0, 10.0, 0.1, None, 2.0);
         assert_eq!(fast.steps[0], 0.1);
         assert_eq!(fast.steps.len(), 8);
         // Capped at T, at MAX_AUTO_LEVELS, and fixed by --levels.
-        assert_eq!(automatic_for(0.01, 10.0, 0.1, None).steps[0], 10.0);
+        assert_eq!(automatic_for(0.01, 10.0, 0.1, None, 2.0).steps[0], 10.0);
         assert_eq!(
-            automatic_for(1.0, 1e30, 0.1, None).steps.len(),
+            automatic_for(1.0, 1e30, 0.1, None, 2.0).steps.len(),
             MAX_AUTO_LEVELS
         );
         assert_eq!(
-            automatic_for(1.0, 10.0, 0.1, Some(3)).steps,
+            automatic_for(1.0, 10.0, 0.1, Some(3), 2.0).steps,
             [1.0, 0.5, 0.25]
         );
         // At rest: the scene's step.
-        assert_eq!(automatic_for(0.0, 10.0, 0.1, None).steps, [0.1, 0.05]);
+        assert_eq!(automatic_for(0.0, 10.0, 0.1, None, 2.0).steps, [0.1, 0.05]);
+    }
+
+    #[test]
+    fn a_finer_ratio_spans_the_same_range_in_more_levels() {
+        assert_eq!(max_levels(2.0), MAX_AUTO_LEVELS);
+        let r = std::f64::consts::SQRT_2;
+        assert_eq!(max_levels(r), 19);
+        assert_eq!(max_levels(4.0), 6);
+        assert_eq!(max_levels(16.0), 4);
+        // ω = 1, T = 10: h_floor = 2^-5.81, so √2 apart: ⌈11.6⌉ = 12 divisions, 13 levels, the
+        // last at or below h_floor and the one before above it.
+        let fine = automatic_for(1.0, 10.0, 0.1, None, r);
+        assert_eq!(fine.steps.len(), 13);
+        let h_floor = (1e-14f64).powf(1.0 / 8.0);
+        assert!(fine.steps[12] <= h_floor && fine.steps[11] > h_floor);
+        for (k, h) in fine.steps.iter().enumerate() {
+            assert!((h - r.powi(-(k as i32))).abs() < 1e-15);
+        }
+        assert!(fine.rule.contains("divided by 1.414"), "{}", fine.rule);
+        assert!(fine.rule.contains("at most 19 levels"), "{}", fine.rule);
+        // Capped at the span of nine halvings.
+        assert_eq!(automatic_for(1.0, 1e30, 0.1, None, r).steps.len(), 19);
+        assert_eq!(
+            automatic_for(1.0, 10.0, 0.1, Some(3), 4.0).steps,
+            [1.0, 0.25, 0.0625]
+        );
     }
 
     #[test]
@@ -330,7 +398,7 @@ duration = 1.0
 "#,
         );
         // √(2·4·0.5/2) = √2 > |Ω₀| = 0.02.
-        let l = automatic(&top, Some(2)).unwrap();
+        let l = automatic(&top, Some(2), DEFAULT_RATIO).unwrap();
         assert!((l.steps[0] - 0.5f64.sqrt()).abs() < 1e-15, "{l:?}");
         let body = scene(
             r#"
@@ -346,6 +414,9 @@ duration = 10.0
 "#,
         );
         // |Ω₀| = |(3, 0, −4)| = 5.
-        assert_eq!(automatic(&body, Some(2)).unwrap().steps[0], 0.2);
+        assert_eq!(
+            automatic(&body, Some(2), DEFAULT_RATIO).unwrap().steps[0],
+            0.2
+        );
     }
 }

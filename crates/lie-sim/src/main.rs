@@ -111,9 +111,10 @@ enum Command {
     /// the heavy top's pendulum, the satellite's orbit, the planar body's spring, the vehicle's
     /// righting moment and drag, the springs between bodies; with [forces] also the torques' spin-up
     /// rate and 1/Δt of a schedule's shortest gap between knots): h = 1/ω (hω = 1,
-    /// near the stability edge; at most T), halved down to where an order-8 method reaches the
-    /// 1e-13 reference floor over T, at most 10 levels (--levels fixes the count); finest levels
-    /// are dropped when the work limit would be exceeded. Each run reports the error at T and the
+    /// near the stability edge; at most T), halved (or divided by --ratio) down to where an
+    /// order-8 method reaches the 1e-13 reference floor over T, at most 10 levels at ratio 2
+    /// (--levels fixes the count); finest levels are dropped when the work limit would be
+    /// exceeded. Each run reports the error at T and the
     /// maximum relative energy, Casimir and spatial momentum-map errors over the run.
     ///
     /// The reference, made independently of every method in the table: the exact flow on the free
@@ -142,6 +143,14 @@ enum Command {
         /// reference floor, at most 10].
         #[arg(long, value_parser = clap::value_parser!(u32).range(2..=12))]
         levels: Option<u32>,
+        /// The ratio of successive steps of the automatic ladder, in [1.1, 16]: between two of
+        /// its points an order-p method's error moves by ratio^p, so the cheapest run that meets
+        /// a target may overshoot it by that much; 1.41 (√2) samples every method twice as finely
+        /// for about twice the runs (the level cap grows to span the same range).
+        #[arg(long, value_name = "R", default_value_t = ladder::DEFAULT_RATIO,
+              allow_hyphen_values = true, value_parser = parse_ratio,
+              conflicts_with = "steps")]
+        ratio: f64,
         /// What the plot draws against cost: the error at T, or the maximum relative energy,
         /// Casimir (|Π|² on SO(3)) or spatial momentum-map (R Π; the heavy top: e₃·R Π) error
         /// over the run. Every one is in the table and the CSV.
@@ -304,6 +313,18 @@ fn parse_horizon(s: &str) -> Result<f64, String> {
     match s.trim().parse::<f64>() {
         Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
         Ok(_) => Err("the horizon must be finite and positive".into()),
+        Err(_) => Err("not a number".into()),
+    }
+}
+
+fn parse_ratio(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(r) if ladder::RATIO_RANGE.contains(&r) => Ok(r),
+        Ok(r) => Err(format!(
+            "the ratio of successive steps must be in [{}, {}], got {r}",
+            ladder::RATIO_RANGE.start(),
+            ladder::RATIO_RANGE.end()
+        )),
         Err(_) => Err("not a number".into()),
     }
 }
@@ -513,6 +534,7 @@ fn cmd_trade(
     plot_path: Option<PathBuf>,
     steps: Option<ladder::StepList>,
     levels: Option<u32>,
+    ratio: f64,
     metric: trade::Metric,
     repeats: u32,
     reference_args: &ReferenceArgs,
@@ -540,7 +562,7 @@ fn cmd_trade(
     trade::check_metric(&scene, metric)?;
     let mut ladder = match steps {
         Some(list) => ladder::explicit(list.0, scene.duration)?,
-        None => ladder::automatic(&scene, levels.map(|l| l as usize))?,
+        None => ladder::automatic(&scene, levels.map(|l| l as usize), ratio)?,
     };
     let dropped =
         trade::fit_to_limits(&scene, &mut ladder, repeats as usize, overrides.allow_large);
@@ -957,6 +979,7 @@ fn main() -> ExitCode {
             plot,
             steps,
             levels,
+            ratio,
             metric,
             horizon,
             repeats,
@@ -973,6 +996,7 @@ fn main() -> ExitCode {
                 plot,
                 steps,
                 levels,
+                ratio,
                 metric,
                 repeats,
                 &reference,

@@ -1032,7 +1032,7 @@ mod tests {
         let mut scene = Scene::default_scene(Default::default()).unwrap();
         scene.duration = 1e5;
         // ωT = 1e5: (1e-18)^{1/8} = 2^{-7.5}, nine levels, 2.6e7 steps per run at the finest.
-        let mut ladder = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None);
+        let mut ladder = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None, 2.0);
         assert_eq!(ladder.steps.len(), 9);
         assert!(estimate(&scene, &ladder.steps, 3)
             .check("t", false)
@@ -1044,9 +1044,9 @@ mod tests {
         let mut one_more = ladder.steps.clone();
         one_more.push(ladder.steps[ladder.steps.len() - 1] / 2.0);
         assert!(estimate(&scene, &one_more, 3).check("t", false).is_err());
-        let mut given = crate::ladder::automatic_for(1.0, scene.duration, 0.1, Some(10));
+        let mut given = crate::ladder::automatic_for(1.0, scene.duration, 0.1, Some(10), 2.0);
         assert_eq!(fit_to_limits(&scene, &mut given, 3, false), 0);
-        let mut allowed = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None);
+        let mut allowed = crate::ladder::automatic_for(1.0, scene.duration, 0.1, None, 2.0);
         assert_eq!(fit_to_limits(&scene, &mut allowed, 3, true), 0);
     }
 

@@ -113,21 +113,40 @@ duration = 0.5
             -20.0 * scale
         );
         std::fs::write(dir.join("s.toml"), scene).unwrap();
-        let o = lie_sim(
-            &["trade", "s.toml", "--out", "w.csv", "--repeats", "1"],
-            &dir,
-        );
-        assert!(o.status.success(), "{}", stderr(&o));
-        assert!(stdout(&o).contains("hω = 1.00"), "{}", stdout(&o));
-        let t = Table::read(&dir.join("w.csv"));
-        let hs = t.values("rk4,-,-,-", "h");
-        let omega = 1.0 / top;
-        let at_floor = |h: f64| (h * omega).powi(8) * (omega * 0.5f64).max(1.0) <= 1e-13;
-        assert!(at_floor(hs[hs.len() - 1]), "{hs:?}");
-        assert!(!at_floor(hs[hs.len() - 2]), "{hs:?}");
-        assert!((hs[0] - top).abs() < 1e-15 * top, "{hs:?}");
-        for w in hs.windows(2) {
-            assert_eq!(w[1], w[0] / 2.0);
+        let mut halving_levels = 0;
+        // The default ratio 2, then √2: the same span in twice the divisions.
+        for ratio in [None, Some(std::f64::consts::SQRT_2)] {
+            let r = ratio.map(|r: f64| r.to_string());
+            let mut args = vec!["trade", "s.toml", "--out", "w.csv", "--repeats", "1"];
+            if let Some(r) = &r {
+                args.extend(["--ratio", r.as_str()]);
+            }
+            let o = lie_sim(&args, &dir);
+            assert!(o.status.success(), "{}", stderr(&o));
+            assert!(stdout(&o).contains("hω = 1.00"), "{}", stdout(&o));
+            let t = Table::read(&dir.join("w.csv"));
+            let hs = t.values("rk4,-,-,-", "h");
+            let omega = 1.0 / top;
+            let at_floor = |h: f64| (h * omega).powi(8) * (omega * 0.5f64).max(1.0) <= 1e-13;
+            assert!(at_floor(hs[hs.len() - 1]), "{hs:?}");
+            assert!(!at_floor(hs[hs.len() - 2]), "{hs:?}");
+            assert!((hs[0] - top).abs() < 1e-15 * top, "{hs:?}");
+            match ratio {
+                None => {
+                    for w in hs.windows(2) {
+                        assert_eq!(w[1], w[0] / 2.0);
+                    }
+                    halving_levels = hs.len();
+                }
+                Some(r) => {
+                    for (k, h) in hs.iter().enumerate() {
+                        let want = top / r.powi(k as i32);
+                        assert!((h - want).abs() < 1e-14 * want, "{hs:?}");
+                    }
+                    let n = hs.len();
+                    assert!(n == 2 * halving_levels - 2 || n == 2 * halving_levels - 1);
+                }
+            }
         }
     }
     std::fs::remove_dir_all(&dir).unwrap();
@@ -315,6 +334,14 @@ fn bad_trade_flags_are_refused_naming_the_flag() {
         (vec!["--steps", "0.1,x"], "--steps"),
         (vec!["--steps", "0.1,0.25", "--horizon", "0.2"], "--steps"),
         (vec!["--steps", "0.1", "--levels", "3"], "--levels"),
+        (vec!["--steps", "0.1", "--ratio", "1.5"], "--ratio"),
+        (vec!["--ratio", "1"], "--ratio"),
+        (vec!["--ratio", "1.05"], "--ratio"),
+        (vec!["--ratio", "17"], "--ratio"),
+        (vec!["--ratio", "-2"], "--ratio"),
+        (vec!["--ratio", "NaN"], "--ratio"),
+        (vec!["--ratio", "inf"], "--ratio"),
+        (vec!["--ratio", "half"], "--ratio"),
         (vec!["--step", "0.1"], "--step"),
         (vec!["--horizon", "0"], "--horizon"),
         (vec!["--horizon", "-1"], "--horizon"),
