@@ -10,13 +10,14 @@
 //! `(hω)^p · max(1, ωT) = `[`REFERENCE_FLOOR`] — finer steps only measure the lower-order methods
 //! at a higher cost — with at least 2 levels and at most the span of [`MAX_AUTO_LEVELS`] halvings'
 //! levels ([`max_levels`]; `--levels` fixes the count instead; without it, the finest levels are
-//! dropped, down to two, when the trade would exceed the work limits of [`crate::bounds`]).
+//! dropped, down to two, when the trade would exceed the work limits of [`crate::bounds`]). A scene
+//! at rest (ω = 0) has no time scale of its own: its ladder starts at the scene's step h instead.
 //!
 //! **The ratio.** The cheapest run that reaches a target is a ladder point: between two points a
 //! method's error falls by r^p, so the run picked may be up to r^p more accurate, and r times
 //! dearer, than the target needs, and which method that penalises most depends on where its points
-//! fall. A ratio of √2 (`--ratio 1.41`) halves that granularity at about twice the runs. A scene at rest (ω = 0) has no time scale of its
-//! own: its ladder starts at the scene's step h instead.
+//! fall. A ratio of √2 (`--ratio 1.41`) halves that granularity (in log h) for about twice the
+//! runs.
 //!
 //! **Explicit ladder.** `--steps 0.1,0.05,0.02`: exactly these steps, in this order; each finite,
 //! positive and at most T.
