@@ -2,10 +2,11 @@
 //! scene, measured, not guessed.
 //!
 //! It runs the candidates of [`crate::trade::candidates`] breadth first over a ladder of steps
-//! h₀, h₀/2, …, h₀/2^{L−1} (the exact flow also in one step to T): every method at the coarsest
-//! step, then every method at the next, so that a budget cut stops at an equally explored ladder,
-//! not in the middle of one slow method's fine steps. A method that met the target is not run at
-//! finer steps (they only cost more); one that failed is not run again. The measure is
+//! h₀, h₀/r, …, h₀/r^{L−1} (r = 2 unless `--ratio` says otherwise; the exact flow also in one step
+//! to T): every method at the coarsest step, then every method at the next, so that a budget cut
+//! stops at an equally explored ladder, not in the middle of one slow method's fine steps. A
+//! method that met the target is not run at finer steps (they only cost more); one that failed is
+//! not run again. The measure is
 //!
 //! - `error`: the error at T against the reference of [`crate::reference`] (the exact flow on
 //!   free-body scenes, elsewhere Gragg–Bulirsch–Stoer refined to `--reference-tolerance`, or the
@@ -70,14 +71,15 @@ pub struct Choice {
     pub shortfall: Option<String>,
 }
 
-/// Runs the bounded search (see the module page). Errors: a target that is not finite and
-/// positive, a target (error metric) below the reference's estimated error, and whatever stops
-/// the reference.
+/// Runs the bounded search (see the module page) over `levels` steps `ratio` apart. Errors: a
+/// target that is not finite and positive, a target (error metric) below the reference's
+/// estimated error, and whatever stops the reference.
 pub fn choose(
     scene: &Scene,
     target: f64,
     metric: Metric,
     levels: usize,
+    ratio: f64,
     budget: Duration,
     reference_options: &ReferenceOptions,
 ) -> Result<Choice, SimError> {
@@ -89,7 +91,7 @@ pub fn choose(
         });
     }
     let ladder: Vec<f64> = (0..levels)
-        .map(|k| scene.step / f64::powi(2.0, k as i32))
+        .map(|k| scene.step / ratio.powi(k as i32))
         .collect();
     let reference = match metric {
         Metric::Error => Some(reference(scene, reference_options)?),

@@ -228,9 +228,15 @@ enum Command {
         /// Wall-clock budget of the search: seconds, or with a unit (`30s`, `2m`, `1h`).
         #[arg(long, default_value = "30s", value_parser = parse_budget)]
         budget: std::time::Duration,
-        /// Number of step sizes h, h/2, …, from the scene's step.
+        /// Number of step sizes h, h/2, … (h/R, h/R², … with --ratio), from the scene's step.
         #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u32).range(1..=12))]
         levels: u32,
+        /// The ratio of successive steps, in [1.1, 16]: the chosen step is a point of this
+        /// ladder, so a finer one (1.41 = √2) lands closer to the cheapest step that meets the
+        /// target, over a shorter range of steps for the same --levels.
+        #[arg(long, value_name = "R", default_value_t = ladder::DEFAULT_RATIO,
+              allow_hyphen_values = true, value_parser = parse_ratio)]
+        ratio: f64,
         /// Write the scene with the chosen method and step here.
         #[arg(long)]
         write: Option<PathBuf>,
@@ -790,6 +796,7 @@ fn cmd_choose(
     metric: choose::Metric,
     budget: std::time::Duration,
     levels: u32,
+    ratio: f64,
     write: Option<PathBuf>,
     reference_args: &ReferenceArgs,
     overrides: OverrideArgs,
@@ -813,6 +820,7 @@ fn cmd_choose(
         target,
         metric,
         levels as usize,
+        ratio,
         budget,
         &reference_args.options(),
     );
@@ -1021,6 +1029,7 @@ fn main() -> ExitCode {
             horizon,
             budget,
             levels,
+            ratio,
             write,
             reference,
             mut overrides,
@@ -1034,6 +1043,7 @@ fn main() -> ExitCode {
                 metric,
                 budget,
                 levels,
+                ratio,
                 write,
                 &reference,
                 overrides,

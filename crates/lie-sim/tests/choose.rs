@@ -137,6 +137,59 @@ fn the_chosen_energy_method_meets_the_target_at_every_step() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// With `--ratio 1.5` the search runs h₀, h₀/1.5, h₀/1.5², …: at a target no method meets at h₀
+/// (the heavy top's energy to 1e-8 over T = 1; RK4 needs h ≈ 0.007) the chosen step written to
+/// the scene is one of the finer ones — none of them on the halving ladder — and the chosen run
+/// meets the target when re-run.
+#[test]
+fn the_chosen_step_is_a_point_of_the_ratio_ladder() {
+    let dir = temp_dir("ratio");
+    let scene = scenes_dir().join("heavy-top.toml");
+    let o = lie_sim(
+        &[
+            "choose",
+            scene.to_str().unwrap(),
+            "--target",
+            "1e-8",
+            "--metric",
+            "energy",
+            "--horizon",
+            "1",
+            "--step",
+            "0.02",
+            "--ratio",
+            "1.5",
+            "--levels",
+            "8",
+            "--write",
+            "r.toml",
+        ],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let written = std::fs::read_to_string(dir.join("r.toml")).unwrap();
+    let step: f64 = written
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("step = "))
+        .and_then(|v| v.split_whitespace().next())
+        .unwrap()
+        .parse()
+        .unwrap();
+    let on_ladder = (1..8).any(|k| (step - 0.02 / 1.5f64.powi(k)).abs() <= 1e-15 * step);
+    assert!(on_ladder, "chosen step {step} is not 0.02/1.5^k, k ≥ 1");
+    assert!((0..12).all(|j| (step - 0.02 / 2f64.powi(j)).abs() > 1e-12 * step));
+    let o = lie_sim(&["run", "r.toml", "--out", "r.csv"], &dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    let line = out
+        .lines()
+        .find(|l| l.contains("max |E − E₀|/|E₀|"))
+        .unwrap();
+    let value: f64 = line.rsplit(' ').next().unwrap().parse().unwrap();
+    assert!(value <= 1e-8, "{line}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// A target nothing reaches within the search (the heavy top at h = 0.1 = 2/ω, one level): one
 /// line saying so, with the best value reached, exit 1, no file. A target below twice the
 /// reference's estimated error is refused before any search: no resolved error could meet it.
@@ -198,6 +251,9 @@ fn bad_input_is_one_line_and_no_file() {
         (vec!["--target", "1e-8", "--horizon", "-1"], "--horizon"),
         (vec!["--target", "1e-8", "--horizon", "0"], "--horizon"),
         (vec!["--target", "1e-8", "--budget", "0s"], "--budget"),
+        (vec!["--target", "1e-8", "--ratio", "1"], "--ratio"),
+        (vec!["--target", "1e-8", "--ratio", "NaN"], "--ratio"),
+        (vec!["--target", "1e-8", "--ratio", "-3"], "--ratio"),
         (
             vec!["--target", "1e-8", "--budget", "3 fortnights"],
             "--budget",
