@@ -18,6 +18,21 @@ fn last_row(path: &Path) -> Vec<f64> {
         .collect()
 }
 
+/// Runs the scene `file` written by `choose` with `lie-sim run` in `dir`; returns its summary's
+/// maximum relative energy error over the run and the summary line.
+fn rerun_energy_error(dir: &Path, file: &str) -> (f64, String) {
+    let o = lie_sim(&["run", file, "--out", "rerun.csv"], dir);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    let line = out
+        .lines()
+        .find(|l| l.contains("max |E − E₀|/|E₀|"))
+        .unwrap()
+        .to_string();
+    let value: f64 = line.rsplit(' ').next().unwrap().parse().unwrap();
+    (value, line)
+}
+
 /// Classical RK4 on `Ṙ = R Ω̂`, `Π̇ = Π × Ω`, Ω = 𝕀⁻¹Π (𝕀 diagonal), `n` steps over [0, t]:
 /// an integration written here, independent of lie-sim and its reference.
 fn rk4_free_body(
@@ -126,13 +141,7 @@ fn the_chosen_energy_method_meets_the_target_at_every_step() {
         &dir,
     );
     assert!(o.status.success(), "{}", stderr(&o));
-    let o = lie_sim(&["run", "e.toml", "--out", "e.csv"], &dir);
-    let out = String::from_utf8_lossy(&o.stdout).into_owned();
-    let line = out
-        .lines()
-        .find(|l| l.contains("max |E − E₀|/|E₀|"))
-        .unwrap();
-    let value: f64 = line.rsplit(' ').next().unwrap().parse().unwrap();
+    let (value, line) = rerun_energy_error(&dir, "e.toml");
     assert!(value <= 1e-6, "{line}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -178,14 +187,7 @@ fn the_chosen_step_is_a_point_of_the_ratio_ladder() {
     let on_ladder = (1..8).any(|k| (step - 0.02 / 1.5f64.powi(k)).abs() <= 1e-15 * step);
     assert!(on_ladder, "chosen step {step} is not 0.02/1.5^k, k ≥ 1");
     assert!((0..12).all(|j| (step - 0.02 / 2f64.powi(j)).abs() > 1e-12 * step));
-    let o = lie_sim(&["run", "r.toml", "--out", "r.csv"], &dir);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let out = String::from_utf8_lossy(&o.stdout).into_owned();
-    let line = out
-        .lines()
-        .find(|l| l.contains("max |E − E₀|/|E₀|"))
-        .unwrap();
-    let value: f64 = line.rsplit(' ').next().unwrap().parse().unwrap();
+    let (value, line) = rerun_energy_error(&dir, "r.toml");
     assert!(value <= 1e-8, "{line}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
