@@ -11,23 +11,30 @@
 //! ```
 //!
 //! which lives in the vector space 𝔤 and is integrated, together with μ, by the classical RK4
-//! tableau (c = 0, ½, ½, 1; b = ⅙, ⅓, ⅓, ⅙):
+//! tableau (c = 0, ½, ½, 1; b = ⅙, ⅓, ⅓, ⅙) with `(d^L exp_Θ)⁻¹ = I + ½ ad_Θ + (1/12) ad_Θ² + …`
+//! (Bernoulli numbers, B₁ = +½ in this left-trivialized convention) truncated where it no longer
+//! affects order 4.
+//!
+//! Written out naively that is two brackets per stage. Munthe-Kaas and Owren ("Computations in
+//! a free Lie algebra", Phil. Trans. R. Soc. A 357 (1999); also Iserles, Munthe-Kaas, Nørsett,
+//! Zanna, "Lie-group methods", Acta Numerica 2000) expand the stages in the graded free Lie
+//! algebra and keep only the brackets of order ≤ 4 that survive: with F_i = h ξ_i,
 //!
 //! ```text
-//! Θ_i = h Σ_j a_ij K_j,   g_i = g_k exp(Θ_i),   μ_i = μ_k + h Σ_j a_ij L_j,
-//! K_i = (d^L exp_{Θ_i})⁻¹ ∂h/∂μ(μ_i),          L_i = ad*_{∂h/∂μ(μ_i)} μ_i + F(g_i),
-//! g_{k+1} = g_k exp(h Σ b_i K_i),            μ_{k+1} = μ_k + h Σ b_i L_i.
+//! ξ_i = ∂h/∂μ(μ_i),   L_i = ad*_{ξ_i} μ_i + F(g_i),   g_i = g_k exp(Θ_i),   μ_i = μ_k + h Σ_j a_ij L_j,
+//! Θ₁ = 0,   Θ₂ = ½F₁,   Θ₃ = ½F₂ + ⅛[F₁, F₂],   Θ₄ = F₃,
+//! g_{k+1} = g_k exp(⅙(F₁ + 2F₂ + 2F₃ + F₄) + (1/12)[F₁, F₄]),   μ_{k+1} = μ_k + h Σ b_i L_i.
 //! ```
 //!
-//! `(d^L exp_Θ)⁻¹ = Σ_k B_k/k! ad_Θ^k = I + ½ ad_Θ + (1/12) ad_Θ² − (1/720) ad_Θ⁴ + …`
-//! (Bernoulli numbers, B₁ = +½ in this left-trivialized convention) is truncated after the ad_Θ²
-//! term, the standard RKMK choice: Θ_i = O(h), so the first dropped term changes K_i by O(h⁴) and
-//! the step by O(h⁵), which keeps order 4 (measured in `tests/baselines.rs`). The truncated map is
-//! two brackets, `K = ξ + ½[Θ, ξ] + (1/12)[Θ, [Θ, ξ]]`: O(n³) matrix products on SO(n), where the
-//! exact operator would be a dense dim 𝔤 × dim 𝔤 matrix to form and invert. The first stage has
-//! Θ₁ = 0 and skips it. Without a potential the stages do not need g_i and no exponential is
-//! evaluated except the final one; without reconstruction only μ is integrated (then the method
-//! is plain RK4 on μ). For fixed-size groups every quantity lives on the stack.
+//! The brackets carry + here where the paper's y = exp(Θ) y₀ form prints −: this crate's
+//! g = g_k exp(Θ) is the other trivialization, which reverses the bracket. Both brackets are
+//! pinned by `tests/baselines.rs`: with both signs reversed the method is order 2, with the
+//! stage-3 sign reversed order 3 on the heavy top (whose force reads g₃); as written, 4.0 on every
+//! problem there. Without a potential the stages do not need g_i, so the step evaluates one
+//! bracket and one exponential (the final one): its stages never touch the configuration,
+//! where an RK4 on (q, Π) forms a stage quaternion and its derivative four times. Without reconstruction only
+//! μ is integrated (then the method is plain RK4 on μ). For fixed-size groups every quantity
+//! lives on the stack.
 
 use crate::carried_state;
 use crate::lie_poisson::{check_state, RENORMALIZE_EVERY};
@@ -35,7 +42,7 @@ use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use lie_groups::{LieGroup, Vector};
 
-/// RKMK4 (classical RK4 tableau, d^L exp⁻¹ truncated after ad²) for any system on any Lie group G.
+/// RKMK4 (classical RK4 tableau, Munthe-Kaas–Owren's two brackets) for any system on any Lie group G.
 ///
 /// State: time t, body momentum μ ∈ 𝔤*, and g ∈ G when it is reconstructed (`None` integrates μ
 /// alone, only allowed without a potential).
@@ -117,22 +124,27 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         // g_i = g_k exp(Θ_i), only evaluated where a force reads it.
         let stage_g = |theta: &G::Algebra| potential.then(|| G::exp_compose(gk, theta));
 
-        // Stage 1: Θ₁ = 0, (d^L exp_0)⁻¹ = I.
-        let (k1, l1) = self.rates(v, t0, Some(gk), mu);
-        // Stage 2: Θ₂ = h/2 K₁.
-        let t2 = k1.scale(half);
-        let (x2, l2) = self.rates(v, tm, stage_g(&t2).as_ref(), &mu.axpy(half, &l1));
-        let k2 = dexp_inv_series::<G>(&t2, &x2);
-        // Stage 3: Θ₃ = h/2 K₂.
-        let t3 = k2.scale(half);
-        let (x3, l3) = self.rates(v, tm, stage_g(&t3).as_ref(), &mu.axpy(half, &l2));
-        let k3 = dexp_inv_series::<G>(&t3, &x3);
-        // Stage 4: Θ₄ = h K₃.
-        let t4 = k3.scale(h);
-        let (x4, l4) = self.rates(v, t1, stage_g(&t4).as_ref(), &mu.axpy(h, &l3));
-        let k4 = dexp_inv_series::<G>(&t4, &x4);
+        // Stage 1 at Θ₁ = 0.
+        let (x1, l1) = self.rates(v, t0, Some(gk), mu);
+        // Stage 2 at Θ₂ = h/2 ξ₁.
+        let (x2, l2) = self.rates(
+            v,
+            tm,
+            stage_g(&x1.scale(half)).as_ref(),
+            &mu.axpy(half, &l1),
+        );
+        // Stage 3 at Θ₃ = h/2 ξ₂ + h²/8 [ξ₁, ξ₂] (the bracket only where g₃ is read).
+        let g3 = potential.then(|| {
+            let t3 = x2.axpy(0.25 * h, &G::bracket(&x1, &x2)).scale(half);
+            G::exp_compose(gk, &t3)
+        });
+        let (x3, l3) = self.rates(v, tm, g3.as_ref(), &mu.axpy(half, &l2));
+        // Stage 4 at Θ₄ = h ξ₃.
+        let (x4, l4) = self.rates(v, t1, stage_g(&x3.scale(h)).as_ref(), &mu.axpy(h, &l3));
 
-        let theta = k1.add(&k2.add(&k3).scale(2.0)).add(&k4).scale(h / 6.0);
+        // Θ = h/6 (ξ₁ + 2ξ₂ + 2ξ₃ + ξ₄) + h²/12 [ξ₁, ξ₄].
+        let sum = x1.add(&x2.add(&x3).scale(2.0)).add(&x4);
+        let theta = sum.axpy(0.5 * h, &G::bracket(&x1, &x4)).scale(h / 6.0);
         let mu1 = mu.axpy(h / 6.0, &l1.add(&l2.add(&l3).scale(2.0)).add(&l4));
         (theta, mu1)
     }
@@ -142,14 +154,6 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
 #[inline(always)]
 fn hadamard<V: Vector>(a: &V, mu: &V) -> V {
     V::from_fn(mu.dim(), |i| a.get(i) * mu.get(i))
-}
-
-/// `(I + ½ ad_Θ + (1/12) ad_Θ²) ξ = ξ + ½[Θ, ξ] + (1/12)[Θ, [Θ, ξ]]`: (d^L exp_Θ)⁻¹ ξ up to O(|Θ|⁴|ξ|).
-#[inline]
-fn dexp_inv_series<G: LieGroup>(theta: &G::Algebra, xi: &G::Algebra) -> G::Algebra {
-    let b1 = G::bracket(theta, xi);
-    let b2 = G::bracket(theta, &b1);
-    xi.axpy(0.5, &b1).axpy(1.0 / 12.0, &b2)
 }
 
 impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
