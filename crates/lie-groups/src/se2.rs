@@ -14,6 +14,7 @@
 //! - `α = (ω/2) cot(ω/2)`, `γ = (1 − α)/ω` (log and (d^L exp)⁻¹).
 
 use crate::so2::check_rotation2;
+use crate::trig::{quartic, COSC_SERIES, SINC3_SERIES, SINC_SERIES};
 use crate::{Action, CayleyGroup, LieError, LieGroup, So2};
 use nalgebra::{Isometry2, Matrix2, Matrix3, Translation2, UnitComplex, Vector2, Vector3};
 
@@ -31,7 +32,7 @@ const SMALL: f64 = 0.1;
 fn fa(w: f64) -> f64 {
     if w.abs() < SMALL {
         let w2 = w * w;
-        1.0 - w2 / 6.0 * (1.0 - w2 / 20.0 * (1.0 - w2 / 42.0 * (1.0 - w2 / 72.0)))
+        quartic(w2, SINC_SERIES)
     } else {
         w.sin() / w
     }
@@ -42,7 +43,7 @@ fn fa(w: f64) -> f64 {
 fn fc(w: f64) -> f64 {
     if w.abs() < SMALL {
         let w2 = w * w;
-        0.5 - w2 / 24.0 * (1.0 - w2 / 30.0 * (1.0 - w2 / 56.0 * (1.0 - w2 / 90.0)))
+        quartic(w2, COSC_SERIES)
     } else {
         let h = (0.5 * w).sin();
         2.0 * h * h / (w * w)
@@ -54,7 +55,7 @@ fn fc(w: f64) -> f64 {
 fn fd(w: f64) -> f64 {
     if w.abs() < SMALL {
         let w2 = w * w;
-        w / 6.0 * (1.0 - w2 / 20.0 * (1.0 - w2 / 42.0 * (1.0 - w2 / 72.0 * (1.0 - w2 / 110.0))))
+        w * quartic(w2, SINC3_SERIES)
     } else {
         (w - w.sin()) / (w * w)
     }

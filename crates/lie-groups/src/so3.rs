@@ -5,6 +5,7 @@
 //! - Every closed form below is written with θ = |ω| and carries a Taylor branch for small θ
 //!   (below [`SMALL_ANGLE`]), so that |ω| = 1e-8 and ω = 0 give full double precision and no 0/0.
 
+use crate::trig::{quartic, COSC_SERIES, SINC3_SERIES, SINC_SERIES};
 use crate::{trig, Action, CayleyGroup, DomainReason, LieError, LieGroup};
 use nalgebra::{Matrix3, Vector3};
 
@@ -49,36 +50,6 @@ fn outer(a: &Vector3<f64>, b: &Vector3<f64>) -> Matrix3<f64> {
         a.z * b.z,
     )
 }
-
-/// `c₀ + c₁x + c₂x² + c₃x³ + c₄x⁴` in Estrin's form `(c₀ + c₁x) + x²((c₂ + c₃x) + c₄x²)`:
-/// three dependent multiply-adds where Horner's form takes four, and products by the
-/// coefficients rather than divisions by their reciprocals (a division's latency is three
-/// multiply-adds). The small-angle series below are on the critical path of every stage or
-/// residual that evaluates exp or its derivatives.
-#[inline(always)]
-fn quartic(x: f64, c: [f64; 5]) -> f64 {
-    let x2 = x * x;
-    (c[0] + c[1] * x) + x2 * ((c[2] + c[3] * x) + c[4] * x2)
-}
-
-/// `sin θ/θ = 1 − θ²/6 + θ⁴/120 − θ⁶/5040 + θ⁸/362880 − …` in θ².
-const SINC_SERIES: [f64; 5] = [1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0];
-/// `(1 − cos θ)/θ² = 1/2 − θ²/24 + θ⁴/720 − θ⁶/40320 + θ⁸/3628800 − …` in θ².
-const COSC_SERIES: [f64; 5] = [
-    0.5,
-    -1.0 / 24.0,
-    1.0 / 720.0,
-    -1.0 / 40320.0,
-    1.0 / 3628800.0,
-];
-/// `(θ − sin θ)/θ³ = 1/6 − θ²/120 + θ⁴/5040 − θ⁶/362880 + θ⁸/39916800 − …` in θ².
-const SINC3_SERIES: [f64; 5] = [
-    1.0 / 6.0,
-    -1.0 / 120.0,
-    1.0 / 5040.0,
-    -1.0 / 362880.0,
-    1.0 / 39916800.0,
-];
 
 /// `sin θ / θ = 1 − θ²/6 + θ⁴/120 − θ⁶/5040 + θ⁸/362880 − …`.
 #[inline]

@@ -17,9 +17,44 @@
 //! Below 2⁻⁵ `sin_cos` takes the Taylor series to x⁷ and x⁸ instead (`small_sin_cos`: the
 //! omitted terms are below 0.2 ulp), half the kernels' flops for the splittings' small angles.
 //!
+//! The Taylor series of sin θ/θ, (1 − cos θ)/θ² and (θ − sin θ)/θ³ in θ², which SO(3) and SE(2)
+//! take below θ = 0.1, are evaluated here too, by [`quartic`].
+//!
 //! Why: glibc's `sincos` is a call (with range reduction for any argument and the caller's
 //! vector registers spilled around it) that costs about as much as the whole rest of `So3::exp`;
 //! the kernels are about 25 instructions that inline and overlap with the rest.
+
+/// `c₀ + c₁x + c₂x² + c₃x³ + c₄x⁴` in Estrin's form `(c₀ + c₁x) + x²((c₂ + c₃x) + c₄x²)`:
+/// three dependent multiply-adds where Horner's form takes four, and products by the
+/// coefficients rather than divisions by their reciprocals (a division's latency is three
+/// multiply-adds). The small-angle series below (SO(3)'s and SE(2)'s exp coefficients and their
+/// derivatives' below θ = 0.1) are on the critical path of every stage or residual that
+/// evaluates exp or its derivatives.
+#[inline(always)]
+pub(crate) fn quartic(x: f64, c: [f64; 5]) -> f64 {
+    let x2 = x * x;
+    (c[0] + c[1] * x) + x2 * ((c[2] + c[3] * x) + c[4] * x2)
+}
+
+/// `sin θ/θ = 1 − θ²/6 + θ⁴/120 − θ⁶/5040 + θ⁸/362880 − …` in θ².
+pub(crate) const SINC_SERIES: [f64; 5] =
+    [1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0];
+/// `(1 − cos θ)/θ² = 1/2 − θ²/24 + θ⁴/720 − θ⁶/40320 + θ⁸/3628800 − …` in θ².
+pub(crate) const COSC_SERIES: [f64; 5] = [
+    0.5,
+    -1.0 / 24.0,
+    1.0 / 720.0,
+    -1.0 / 40320.0,
+    1.0 / 3628800.0,
+];
+/// `(θ − sin θ)/θ³ = 1/6 − θ²/120 + θ⁴/5040 − θ⁶/362880 + θ⁸/39916800 − …` in θ².
+pub(crate) const SINC3_SERIES: [f64; 5] = [
+    1.0 / 6.0,
+    -1.0 / 120.0,
+    1.0 / 5040.0,
+    -1.0 / 362880.0,
+    1.0 / 39916800.0,
+];
 
 /// sin x ≈ x + S₁x³ + … + S₆x¹³ on |x| ≤ π/4 (fdlibm `__kernel_sin`).
 const S1: f64 = f64::from_bits(0xBFC5_5555_5555_5549); // −1.66666666666666324348e-01
