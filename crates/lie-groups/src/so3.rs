@@ -946,6 +946,7 @@ mod tests {
     /// edge: each within 2 ulps. (With `dexp_inv_coeff` stopped at θ⁶ as it was, the edge is
     /// 2.4e-15 off.)
     #[test]
+    #[allow(clippy::excessive_precision)] // mpmath's digits, kept verbatim
     fn small_angle_series_are_within_two_ulps_up_to_the_branch_edge() {
         let cases: [(f64, [f64; 4]); 4] = [
             (
