@@ -233,12 +233,22 @@ const HALF_PI_SQ: f64 = core::f64::consts::FRAC_PI_2 * core::f64::consts::FRAC_P
 /// even functions of h, evaluated from h² = θ²/4 (`trig::half_sinc_cos`). Below
 /// [`SMALL_ANGLE`] the Taylor series of [`sinc`] and [`cosc`] in Estrin's form (`quartic`) with
 /// reciprocal coefficients (one rounding more per term than dividing, i.e. ≤ 1e-17 absolute
-/// there), which also avoids 1/θ at θ = 0.
-#[inline]
+/// there), which also avoids 1/θ at θ = 0; that branch is always inlined.
+#[inline(always)]
 fn exp_coeffs(t2: f64) -> (f64, f64) {
     if t2 < SMALL_ANGLE_SQ {
         (quartic(t2, SINC_SERIES), quartic(t2, COSC_SERIES))
-    } else if t2 <= HALF_PI_SQ {
+    } else {
+        exp_coeffs_trig(t2)
+    }
+}
+
+/// [`exp_coeffs`] from θ = [`SMALL_ANGLE`] on, a function of its own: the three branches
+/// together were too large for the compiler to inline, so every exp on a step's path — the
+/// stages of `Rkmk4`, the residuals of the exp θ-methods — called them, small angles included.
+#[inline]
+fn exp_coeffs_trig(t2: f64) -> (f64, f64) {
+    if t2 <= HALF_PI_SQ {
         // θ ≤ π/2: sin h/θ and cos h are even in h, so both come from h² = θ²/4 (exact).
         let (q, ch) = trig::half_sinc_cos(0.25 * t2);
         (2.0 * q * ch, 2.0 * q * q)
