@@ -320,11 +320,6 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         // for WarmStart::record; a failed step drops it.
         let prior = self.warm.prior_contraction(h);
         let mut chord = core::mem::take(self.warm.chord(h));
-        let evaluate = |xi: &G::Algebra| {
-            let ev = self.evaluate(h, xi);
-            (xi.sub(&self.system.velocity(&ev.bar).scale(h)), ev)
-        };
-        let jacobian = |xi: &G::Algebra, ev: &Evaluation<G>| self.jacobian(h, xi, ev);
         let solution = solve::<G, _>(
             &self.config,
             h,
@@ -332,8 +327,14 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             guess,
             &mut chord,
             prior,
-            evaluate,
-            jacobian,
+            // The residual, inlined where the solver calls it: out of line, each call spilled
+            // the step's live registers around it.
+            #[inline(always)]
+            |xi: &G::Algebra| {
+                let ev = self.evaluate(h, xi);
+                (xi.sub(&self.system.velocity(&ev.bar).scale(h)), ev)
+            },
+            |xi: &G::Algebra, ev: &Evaluation<G>| self.jacobian(h, xi, ev),
         )?;
         *self.warm.chord(h) = chord;
         Ok(solution)
