@@ -612,7 +612,10 @@ impl LieGroup for So3 {
     /// `sin θ`, `1 − cos θ` of the (finite) θ (`huge_rotation`): a rotation, never NaN — though
     /// at such angles the ulp of θ exceeds 2π, so any angle about that axis is as good. Non-finite
     /// ω gives a non-finite matrix (the integrators refuse it with an error).
-    #[inline]
+    ///
+    /// Always inlined (the huge and trigonometric branches are functions of their own): out of
+    /// line, the splittings' steps called it once per exact rotation.
+    #[inline(always)]
     fn exp(w: &Vector3<f64>) -> Self {
         let t2 = w.norm_squared();
         if !t2.is_finite() && w.iter().all(|x| x.is_finite()) {
