@@ -26,15 +26,15 @@
 //! g_{k+1} = g_k exp(⅙(F₁ + 2F₂ + 2F₃ + F₄) + (1/12)[F₁, F₄]),   μ_{k+1} = μ_k + h Σ b_i L_i.
 //! ```
 //!
-//! The brackets carry + here where the paper's y = exp(Θ) y₀ form prints −: this crate's
-//! g = g_k exp(Θ) is the other trivialization, which reverses the bracket. Both brackets are
-//! pinned by `tests/baselines.rs`: with both signs reversed the method is order 2, with the
-//! stage-3 sign reversed order 3 on the heavy top (whose force reads g₃); as written, 4.0 on every
-//! problem there. Without a potential the stages do not need g_i, so the step evaluates one
-//! bracket and one exponential (the final one): its stages never touch the configuration,
-//! where an RK4 on (q, Π) forms a stage quaternion and its derivative four times. Without reconstruction only
-//! μ is integrated (then the method is plain RK4 on μ). For fixed-size groups every quantity
-//! lives on the stack.
+//! The brackets carry + here where Munthe-Kaas and Owren's y = exp(Θ) y₀ form prints −: this
+//! crate's g = g_k exp(Θ) is the other trivialization, which reverses the bracket. Both brackets
+//! are pinned by `tests/baselines.rs`: with both signs reversed the method is order 2, with the
+//! stage-3 sign reversed order 3 on the heavy top (whose force reads g₃); as written, 4.0 on
+//! every problem there. Without a potential the stages do not need g_i, so the step evaluates one
+//! bracket and one exponential (the final one): its stages never touch the configuration, where
+//! an RK4 on (q, Π) forms a stage quaternion and its derivative four times. Without
+//! reconstruction only μ is integrated (then the method is plain RK4 on μ). For fixed-size groups
+//! every quantity lives on the stack.
 
 use crate::carried_state;
 use crate::lie_poisson::{check_state, RENORMALIZE_EVERY};
