@@ -139,8 +139,8 @@ enum Command {
         #[arg(long, value_name = "H,H,…", allow_hyphen_values = true,
               value_parser = parse_steps, conflicts_with = "levels")]
         steps: Option<ladder::StepList>,
-        /// Number of levels of the automatic ladder 1/ω, 1/(2ω), … [default: down to the
-        /// reference floor, at most 10].
+        /// Number of levels of the automatic ladder 1/ω, 1/(Rω), 1/(R²ω), … (R = --ratio)
+        /// [default: down to the reference floor, at most 10 at ratio 2, 19 at √2].
         #[arg(long, value_parser = clap::value_parser!(u32).range(2..=12))]
         levels: Option<u32>,
         /// The ratio of successive steps of the automatic ladder, in [1.1, 16]: between two of
