@@ -320,8 +320,10 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     /// `d^{L*}τ_ζ Ad*_{τ(ζ)} = (Ad_{τ(ζ)} d^Lτ_ζ)ᵀ = (d^Rτ_ζ)ᵀ = d^{L*}τ_{−ζ}` (τ(ζ)⁻¹ = τ(−ζ)).
     /// For θ = ½ both terms share `d^{L*}τ_{−η/2}`: `Tau::midpoint_base_momentum` (one coadjoint
     /// increment and one dual tangent, or a closed form), one dual tangent for θ ∈ {0, 1},
-    /// against two of each through μ_{k+1}.
-    #[inline]
+    /// against two of each through μ_{k+1}. Always inlined, as the velocity increments below:
+    /// the integrators call these at every residual, and a call passes its vectors through
+    /// memory.
+    #[inline(always)]
     fn base_momentum_from_impulse(
         &self,
         eta: &G::Algebra,
@@ -451,7 +453,7 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     /// `ξ_k − ξ = (Ad_{τ(θhξ)} − I) ξ − θ d^Lτ_{−θhξ} ζ`; 0 for θ = 0. The first term vanishes
     /// where τ(sξ) commutes with ξ (`Tau::COMMUTES_WITH_ARGUMENT`: exp, Cayley) and is not formed
     /// there; otherwise it is `Tau::tau_adjoint_increment` (no term of size |ξ| formed).
-    #[inline]
+    #[inline(always)]
     fn first_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
         let th = self.theta();
         if th == 0.0 {
@@ -467,7 +469,7 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for DiscretizationMap<T> {
     }
     /// `ξ_{k+1} − ξ = (Ad_{τ(−(1−θ)hξ)} − I) ξ + (1−θ) d^Lτ_{(1−θ)hξ} ζ`; 0 for θ = 1; the first
     /// term as in [`LiftedMap::first_velocity_increment`].
-    #[inline]
+    #[inline(always)]
     fn second_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
         let b = 1.0 - self.theta();
         if b == 0.0 {

@@ -278,12 +278,18 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// For a trial ξ: the impulse ([`Self::impulse`]) and the base momentum μ̄ straight from
     /// μ_k ([`LiftedMap::base_momentum_from_impulse`]): μ_{k+1} is formed once per step, at the
     /// solution ([`LiftedMap::momentum_update`]).
-    #[inline]
+    ///
+    /// Inlined whole into the solver's loop, with the map's part
+    /// ([`LiftedMap::base_momentum_from_impulse`]): called out of line, ξ and μ_k went through
+    /// memory at every residual (see [`crate::solver::solve`]'s loop).
+    #[inline(always)]
     fn evaluate(&self, h: f64, xi: &G::Algebra) -> Evaluation<G> {
         let impulse = self.impulse(h, xi);
+        // μ_k entry by entry (crate::carried_state): the last step stored it.
+        let mu = crate::carried_state::read(&self.mu);
         let bar = self
             .map
-            .base_momentum_from_impulse(xi, &self.mu, impulse.as_ref());
+            .base_momentum_from_impulse(xi, &mu, impulse.as_ref());
         Evaluation { bar, impulse }
     }
 

@@ -891,7 +891,8 @@ impl CayleyGroup for So3 {
     /// `½ d^{L*}cay_{−a}(μ + Ad*_{cay a} μ) = c (μ + δ_a μ)`, c = 4/(4 + |a|²), δ_a = Ad*_{cay a} − I:
     /// with `d^{L*}cay_{−a} = c (I − â/2)` and `μ + cay(a)ᵀμ = 2 (I + â/2)⁻¹ μ`, the product is
     /// `c (I − â/2)(I + â/2)⁻¹ μ = c cay(a)ᵀ μ`. One division (the composition takes two).
-    #[inline]
+    /// Always inlined: it is the Lie–Poisson θ = ½ residual.
+    #[inline(always)]
     fn cay_midpoint_base_momentum(a: &Vector3<f64>, mu: &Vector3<f64>) -> Vector3<f64> {
         let c = 4.0 / (4.0 + a.norm_squared());
         (mu + coadjoint_increment(a, mu, c, 0.5 * c)) * c

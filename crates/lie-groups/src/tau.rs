@@ -343,7 +343,7 @@ impl<G: CayleyGroup> Tau<G> for Cayley {
     fn tau_split_coadjoint_increment(theta: f64, xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         G::cay_split_coadjoint_increment(theta, xi, mu)
     }
-    #[inline]
+    #[inline(always)]
     fn midpoint_base_momentum(a: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         G::cay_midpoint_base_momentum(a, mu)
     }
