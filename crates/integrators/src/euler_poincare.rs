@@ -243,8 +243,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     /// ζ = h f(t_k + θh, ḡ, ξ).
     #[inline]
     fn evaluate(&self, h: f64, delta: &G::Algebra) -> Evaluation<G> {
-        // ξ_k entry by entry (crate::carried_state): the last step stored it.
-        let xi = crate::carried_state::read(&self.xi).add(delta);
+        let xi = self.xi.add(delta);
         let gbar = self
             .g
             .as_ref()
