@@ -15,7 +15,8 @@
 //! form, moves each entry through a stack slot of its own, and the compiler was free to reload
 //! those slots two at a time — the straddling load again, one level down: reading μ_k that way
 //! made the Lie–Poisson step slower, not faster. With the register barrier, `QuaternionRk4`
-//! 43 → 41 ns and Lie–Poisson Cayley θ = 0 with R 49 → 46 ns (μ_k read in the residual).
+//! 43–44 → 41–42 ns and Lie–Poisson Cayley θ = 0 with R 49–50 → 46–48 ns (μ_k read in the
+//! residual). On other targets the fallback is `black_box`, not measured there.
 //!
 //! [`read`] is used once per step or residual, on the state the previous step wrote: by the
 //! explicit steps short enough for the stall to matter, by the Lie–Poisson residual (μ_k), and
