@@ -5,8 +5,9 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use integrators::ensemble::{momenta_on_sphere, Ensemble};
-use integrators::{systems::RigidBody, LiePoisson};
+use integrators::LiePoisson;
 use lie_groups::{Cayley, So3};
+use mechanics::RigidBody;
 use nalgebra::Vector3;
 use std::hint::black_box;
 use std::time::Duration;

@@ -11,9 +11,9 @@
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use integrators::forces::{BodyTorque, Forced, LinearDamping};
-use integrators::systems::RigidBody;
 use integrators::{Integrator, LiePoisson, QuaternionRk4};
 use lie_groups::{Cayley, LieGroup, So3};
+use mechanics::RigidBody;
 use nalgebra::{Matrix3, Vector3};
 use std::hint::black_box;
 

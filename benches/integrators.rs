@@ -21,9 +21,9 @@ use criterion::{
     criterion_group, criterion_main, measurement::WallTime, BenchmarkGroup, Criterion,
 };
 use integrators::baselines::{QuaternionRk4, Rkmk4};
-use integrators::systems::{GeneralizedRigidBody, HeavyTop, RigidBody};
 use integrators::{EulerPoincare, Integrator, LiePoisson, SolverConfig, SolverKind, System};
 use lie_groups::{Cayley, ExpMap, LieGroup, So3, SoN, Tau, Vector};
+use mechanics::systems::{GeneralizedRigidBody, HeavyTop, RigidBody};
 use nalgebra::Vector3;
 use std::hint::black_box;
 

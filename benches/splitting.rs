@@ -28,14 +28,14 @@ use criterion::{
     criterion_group, criterion_main, measurement::WallTime, BenchmarkGroup, Criterion,
 };
 use integrators::baselines::{QuaternionRk4, Rkmk4};
-use integrators::exact::{ExactFreeBody, FreeBodyFlow};
-use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
 use integrators::processing::{Processed, ProcessingScheme};
 use integrators::splitting::SplitSystem;
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
-use integrators::systems::{HeavyTop, RigidBody, RigidBodySe3};
 use integrators::{Integrator, LiePoisson, System};
 use lie_groups::{Cayley, ExpMap, LieGroup, Se3, So3};
+use mechanics::exact::{ExactFreeBody, FreeBodyFlow};
+use mechanics::modified::{ModifiedLiePoisson, ModifiedScheme};
+use mechanics::systems::{HeavyTop, RigidBody, RigidBodySe3};
 use nalgebra::{Matrix3, Vector3, Vector6};
 use std::hint::black_box;
 

@@ -7,9 +7,9 @@
 //! cargo run --release -p lie-integrators --example long_run -- 1000000 # a shorter run
 //! ```
 
-use integrators::systems::RigidBody;
 use integrators::{Integrator, LiePoisson};
 use lie_groups::{Cayley, ExpMap, LieGroup, So3, Tau};
+use mechanics::RigidBody;
 use nalgebra::{Matrix3, Vector3};
 use std::time::Instant;
 

@@ -22,13 +22,13 @@ mod hand_rk4;
 
 use hand_rk4::HandRk4;
 use integrators::baselines::{QuaternionRk4, Rkmk4};
-use integrators::exact::FreeBodyFlow;
-use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
 use integrators::processing::{Processed, ProcessingScheme};
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
-use integrators::systems::{HeavyTop, RigidBody};
 use integrators::{Integrator, IntegratorError, LiePoisson, System};
 use lie_groups::{Cayley, ExpMap, LieGroup, So3};
+use mechanics::exact::FreeBodyFlow;
+use mechanics::modified::{ModifiedLiePoisson, ModifiedScheme};
+use mechanics::systems::{HeavyTop, RigidBody};
 use nalgebra::Vector3;
 use std::hint::black_box;
 

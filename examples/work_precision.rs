@@ -17,13 +17,13 @@
 //! `docs/work-precision.csv`. Run: `cargo run --release -p lie-integrators --example work_precision` (a few minutes).
 
 use lie_integrators::integrators::baselines::{QuaternionRk4, Rkmk4};
-use lie_integrators::integrators::exact::ExactFreeBody;
 use lie_integrators::integrators::splitting::Splitting;
-use lie_integrators::integrators::systems::RigidBody;
 use lie_integrators::integrators::{
     Composition, CompositionScheme, EulerPoincare, Integrator, LiePoisson,
 };
 use lie_integrators::lie_groups::{Cayley, ExpMap, LieGroup, So3, Tau};
+use lie_integrators::mechanics::exact::ExactFreeBody;
+use lie_integrators::mechanics::systems::RigidBody;
 use nalgebra::{Matrix3, Vector3};
 use std::fmt::Write as _;
 use std::time::Instant;

@@ -2,8 +2,9 @@
 //! and examples can reach all of them through one dependency.
 //!
 //! Users depend on the layer they need (`lie-groups`, `trivial-bundles`, `discretization`,
-//! `integrators`); this crate only gathers them.
+//! `integrators`, `mechanics`); this crate only gathers them.
 pub use discretization;
 pub use integrators;
 pub use lie_groups;
+pub use mechanics;
 pub use trivial_bundles;

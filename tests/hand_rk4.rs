@@ -9,9 +9,9 @@ mod hand_rk4;
 
 use hand_rk4::HandRk4;
 use integrators::baselines::QuaternionRk4;
-use integrators::systems::{HeavyTop, RigidBody};
 use integrators::{Integrator, System};
 use lie_groups::{LieGroup, So3};
+use mechanics::systems::{HeavyTop, RigidBody};
 use nalgebra::{UnitQuaternion, Vector3};
 
 const MOMENTS: [f64; 3] = [1.0, 2.0, 3.0];

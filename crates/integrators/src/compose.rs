@@ -41,7 +41,8 @@
 //!
 //! ## Example
 //! ```
-//! use integrators::{Composition, CompositionScheme, Integrator, LiePoisson, systems::RigidBody};
+//! use integrators::{Composition, CompositionScheme, Integrator, LiePoisson};
+//! use mechanics::RigidBody;
 //! use lie_groups::{Cayley, So3};
 //! use nalgebra::Vector3;
 //!

@@ -19,7 +19,7 @@
 //! ```
 //! use integrators::dense_output::integrate_dense;
 //! use integrators::events::{Direction, Event};
-//! use integrators::systems::RigidBody;
+//! use mechanics::RigidBody;
 //! use integrators::LiePoisson;
 //! use lie_groups::{Cayley, LieGroup, So3};
 //! use nalgebra::Vector3;

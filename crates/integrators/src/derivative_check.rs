@@ -21,7 +21,7 @@
 //!
 //! ```
 //! use integrators::derivative_check::check_derivatives;
-//! use integrators::systems::HeavyTop;
+//! use mechanics::HeavyTop;
 //! use lie_groups::{LieGroup, So3};
 //! use nalgebra::Vector3;
 //!

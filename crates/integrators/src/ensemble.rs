@@ -20,7 +20,8 @@
 //!
 //! ```
 //! use integrators::ensemble::{momenta_on_sphere, merge_shards, Ensemble, Execution, Shard};
-//! use integrators::{LiePoisson, systems::RigidBody};
+//! use integrators::{LiePoisson};
+//! use mechanics::RigidBody;
 //! use lie_groups::{Cayley, So3};
 //! use nalgebra::Vector3;
 //!

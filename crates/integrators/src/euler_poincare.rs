@@ -61,9 +61,9 @@
 //! body stalled at 4.4e-12 (h = 0.1) and 2.4e-12 (h = 0.05), where Lie–Poisson reaches 1e-14
 //! and 2e-15; in increment form it reaches 1.0e-14 and 2.5e-15 (`tests/error_floor.rs`).
 
+use crate::checks::{check_state, check_theta, step_too_large};
 use crate::compensated::two_sum;
 use crate::lie_poisson::RENORMALIZE_EVERY;
-use crate::lie_poisson::{check_state, check_theta, step_too_large};
 use crate::solver::{solve, Scales};
 use crate::system::force;
 use crate::WarmStart;
@@ -76,7 +76,8 @@ use lie_groups::{LieGroup, Operator, Vector};
 /// [`DiscretizationMap<T>`].
 ///
 /// ```
-/// use integrators::{EulerPoincare, Integrator, systems::RigidBody};
+/// use integrators::{EulerPoincare, Integrator};
+/// use mechanics::RigidBody;
 /// use lie_groups::{ExpMap, So3, LieGroup};
 /// use nalgebra::Vector3;
 ///

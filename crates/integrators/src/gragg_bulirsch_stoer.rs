@@ -146,7 +146,8 @@ pub fn dexp_left_inv_series<G: LieGroup>(
 /// only without a potential).
 ///
 /// ```
-/// use integrators::{GraggBulirschStoer, Integrator, systems::RigidBody};
+/// use integrators::{GraggBulirschStoer, Integrator};
+/// use mechanics::RigidBody;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
@@ -204,7 +205,7 @@ impl<G: LieGroup, S: System<G>> GraggBulirschStoer<G, S> {
                 ),
             });
         }
-        crate::lie_poisson::check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
+        crate::checks::check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         let n = G::dim();
         Ok(Self {
             system,

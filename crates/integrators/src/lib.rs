@@ -22,11 +22,6 @@
 //! - [`EulerArnold`]: the quadratic-Lagrangian system l(ξ) = ½⟨𝕀ξ, ξ⟩ both integrate.
 //! - [`splitting`]: explicit Poisson splittings into pieces with exact flows (Strang, with
 //!   [`Composition`] to order 10; exact kinetic flow + kicks with Blanes–Moan coefficients).
-//! - [`exact`]: the exact free rigid body flow (Jacobi elliptic functions, any step, cost
-//!   independent of T), as a method ([`exact::ExactFreeBody`]) and as the kinetic piece of the
-//!   kicks ([`exact::FreeBodyFlow`], [`exact::FreeBodySe3Flow`]).
-//! - [`modified`]: the Lie–Poisson step on a modified Hamiltonian H − h²H₂ [− h⁴H₄] of the free
-//!   rigid body: order 4 or 6 at the cost of one order-2 step (θ = ½ and θ = 0).
 //! - [`processing`]: processed methods `P ∘ Kⁿ ∘ P⁻¹` of any symmetric method — effective order
 //!   6 and 8 from fewer basic steps than a composition of that order, P applied only when the
 //!   state is read ([`processing::Processed`]).
@@ -51,10 +46,10 @@
 //! and `docs/work-precision.md` of the repository.
 //!
 //! A system is anything implementing [`System`] (reduced Hamiltonian h(μ), its derivatives, the
-//! Legendre map, an optional potential V(g) and Casimir); [`systems`] holds concrete ones — the
-//! rigid bodies, and the vehicles of docs/vehicles.md: a spacecraft with reaction wheels on
-//! SO(3) × ℝᴷ, an underwater vehicle and a quadrotor on SE(3), the 3D pendulum, N bodies on
-//! springs on SE(3)ᴺ — and
+//! Legendre map, an optional potential V(g) and Casimir); the ready-made ones — the rigid bodies,
+//! tops, satellites and vehicles of docs/vehicles.md — and the methods that exist for one model
+//! only (the exact free rigid body flow, the modified-Hamiltonian steps) are in the `mechanics`
+//! crate, above this one, so that a user with a system of their own compiles none of them.
 //! [`derivative_check`] compares a hand-written system's derivatives with finite differences (see
 //! docs/custom-systems.md and `examples/custom_system.rs` of the repository). Every
 //! integrator implements [`Integrator`] (step, time, μ, optional g, energy, Casimir), so one generic
@@ -74,7 +69,8 @@
 //!
 //! ## Example: the free rigid body
 //! ```
-//! use integrators::{integrate, Integrator, LiePoisson, systems::RigidBody};
+//! use integrators::{integrate, Integrator, LiePoisson};
+//! use mechanics::RigidBody;
 //! use lie_groups::{Cayley, LieGroup, So3};
 //! use nalgebra::Vector3;
 //!
@@ -94,6 +90,7 @@
 
 pub mod baselines;
 mod carried_state;
+pub mod checks;
 mod compensated;
 pub mod compose;
 pub mod dense_output;
@@ -103,17 +100,14 @@ mod error;
 pub mod euler_arnold;
 pub mod euler_poincare;
 pub mod events;
-pub mod exact;
 pub mod forces;
 pub mod gragg_bulirsch_stoer;
 mod integrator;
 pub mod lie_poisson;
-pub mod modified;
 pub mod processing;
 pub mod solver;
 pub mod splitting;
 mod system;
-pub mod systems;
 pub mod warm_start;
 
 pub use baselines::{QuaternionRk4, Rkmk4};

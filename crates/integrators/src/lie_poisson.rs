@@ -36,12 +36,13 @@
 //! `−½ ad*_{(·)} μ`, which remains the default for other groups, keeps J exact up to O(h²) and
 //! needed 5–6); the force's derivative is dropped (see [`crate::solver`]).
 
+use crate::checks::{check_state, check_theta, step_too_large};
 use crate::compensated::two_sum;
 use crate::solver::{solve, Scales, Solution};
 use crate::system::force;
 use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
-use discretization::{DiscretizationError, DiscretizationMap, LiftedMap};
+use discretization::{DiscretizationMap, LiftedMap};
 use lie_groups::{LieGroup, Operator, Vector};
 
 /// The Lie–Poisson integrator (eq. 19) on G for the left-trivialized discretization map
@@ -49,7 +50,8 @@ use lie_groups::{LieGroup, Operator, Vector};
 /// [`DiscretizationMap<T>`].
 ///
 /// ```
-/// use integrators::{LiePoisson, Integrator, systems::RigidBody};
+/// use integrators::{LiePoisson, Integrator};
+/// use mechanics::RigidBody;
 /// use lie_groups::{Cayley, So3, LieGroup};
 /// use nalgebra::Vector3;
 ///
@@ -95,50 +97,6 @@ pub struct CotangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
 /// every step would round g a second time per step, with a bias the spatial momentum map
 /// Ad*_{g⁻¹}μ accumulates (9e-13 after 10⁷ steps of h = 1e-5, against 1.2e-13 now).
 pub const RENORMALIZE_EVERY: u32 = 1024;
-
-/// A map's domain error as the integrator's [`IntegratorError::StepTooLarge`].
-pub(crate) fn step_too_large(step: f64) -> impl Fn(DiscretizationError) -> IntegratorError {
-    move |e| IntegratorError::StepTooLarge {
-        step,
-        reason: e.to_string(),
-    }
-}
-
-/// Refuses θ outside [0, 1] (NaN included).
-pub(crate) fn check_theta(theta: f64) -> Result<(), IntegratorError> {
-    if (0.0..=1.0).contains(&theta) {
-        Ok(())
-    } else {
-        Err(IntegratorError::InvalidTheta { theta })
-    }
-}
-
-/// Refuses non-finite algebra vectors and group elements, and a missing g where V needs it.
-pub(crate) fn check_state<G: LieGroup, S: System<G>>(
-    system: &S,
-    v: &G::Algebra,
-    what: &'static str,
-    g: Option<&G>,
-) -> Result<(), IntegratorError> {
-    if v.dim() != G::dim() {
-        return Err(IntegratorError::InvalidParameter {
-            reason: format!("{what} has dimension {}, the algebra {}", v.dim(), G::dim()),
-        });
-    }
-    if !v.is_finite() {
-        return Err(IntegratorError::NonFinite { what });
-    }
-    if let Some(g) = g {
-        if !g.is_finite() {
-            return Err(IntegratorError::NonFinite {
-                what: "configuration g",
-            });
-        }
-    } else if system.needs_configuration() {
-        return Err(IntegratorError::MissingConfiguration);
-    }
-    Ok(())
-}
 
 impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S> {
     /// Builds the integrator at t = 0 from μ₀ and optionally g₀, with the default
@@ -504,9 +462,47 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::systems::{HeavyTop, RigidBody};
+    use crate::EulerArnold;
     use lie_groups::{Cayley, ExpMap, So3, Tau};
-    use nalgebra::Vector3;
+    use nalgebra::{Matrix3, Vector3};
+
+    /// A heavy top in a few lines (the `mechanics` crate's is out of reach of a unit test):
+    /// V(R) = ⟨m g χ, Rᵀe₃⟩, `T*_e L_R dV = m g χ × Rᵀe₃`.
+    #[derive(Debug, Clone)]
+    struct Top {
+        body: EulerArnold<So3>,
+        mgchi: Vector3<f64>,
+    }
+
+    impl Top {
+        fn vertical_in_body(g: &So3) -> Vector3<f64> {
+            g.as_matrix().transpose() * Vector3::z()
+        }
+    }
+
+    impl System<So3> for Top {
+        fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {
+            self.body.hamiltonian(mu)
+        }
+        fn velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
+            self.body.velocity(mu)
+        }
+        fn hessian(&self, mu: &Vector3<f64>) -> Matrix3<f64> {
+            self.body.hessian(mu)
+        }
+        fn momentum(&self, xi: &Vector3<f64>) -> Vector3<f64> {
+            self.body.momentum(xi)
+        }
+        fn has_potential(&self) -> bool {
+            true
+        }
+        fn potential(&self, g: &So3) -> f64 {
+            self.mgchi.dot(&Self::vertical_in_body(g))
+        }
+        fn potential_differential(&self, g: &So3) -> Vector3<f64> {
+            self.mgchi.cross(&Self::vertical_in_body(g))
+        }
+    }
 
     /// |ξ⁰ − ξ*| for the predictor ξ⁰ and the solved ξ* of one step of size h.
     fn predictor_gap<T: Tau<So3>, S: System<So3> + Clone>(
@@ -526,9 +522,12 @@ mod tests {
     /// between h = 0.02 and h = 0.005). The former predictor h ∂h/∂μ(μ_k) was O(h²).
     #[test]
     fn predictor_is_third_order_accurate() {
-        let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
-        let top =
-            HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 1.0, Vector3::new(0.0, 0.1, 0.5)).unwrap();
+        let inertia = Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0));
+        let body = EulerArnold::<So3>::new(inertia).unwrap();
+        let top = Top {
+            body: body.clone(),
+            mgchi: Vector3::new(0.0, 0.1, 0.5),
+        };
         let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
         for theta in [0.0, 0.3, 0.5, 1.0] {
             let gaps = |h: f64| {

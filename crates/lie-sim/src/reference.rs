@@ -1,7 +1,7 @@
 //! The reference solution of `lie-sim trade` and `lie-sim choose`: the state at T every candidate
 //! is compared with, made independently of the candidates, with its estimated error.
 //!
-//! - **Free rigid body without forces:** the exact flow (`integrators::exact`, Jacobi elliptic
+//! - **Free rigid body without forces:** the exact flow (`mechanics::exact`, Jacobi elliptic
 //!   functions): the mean of its evaluations in one step to T and in n, n + 1, n + 2 steps
 //!   (n = max(8, ⌈T/h₀⌉), h₀ below), whose spread is its estimated error: what rounding leaves,
 //!   ~1e-15 … 1e-14.
@@ -506,7 +506,7 @@ fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Refer
              steps{} and {EXTRA_SAMPLES} with 1, 2 more), refined from h = {h0:.3e}: with the run \
              at twice the step they spread by {spread:.1e}, plus {data:.1e} for the data's \
              rounding ({:.2} s)",
-            2 * GraggBulirschStoer::<lie_groups::So3, integrators::systems::RigidBody>::DEFAULT_COLUMNS,
+            2 * GraggBulirschStoer::<lie_groups::So3, mechanics::systems::RigidBody>::DEFAULT_COLUMNS,
             if breaks.is_empty() {
                 String::new()
             } else {

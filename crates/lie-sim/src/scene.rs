@@ -87,9 +87,9 @@
 //!
 //! `modified = true` runs `lie-poisson` (θ = 0.5 or θ = 0; τ = exp or cayley) on the modified
 //! Hamiltonian `H − h²H₂` (`order = 4`, the default) or `H − h²H₂ − h⁴H₄` (`order = 6`) of
-//! `integrators::modified`: order 4 or 6 at the cost of one order-2 step, free rigid body only.
+//! `mechanics::modified`: order 4 or 6 at the cost of one order-2 step, free rigid body only.
 //!
-//! The explicit methods of `integrators::splitting` and `integrators::exact`:
+//! The explicit methods of `integrators::splitting` and `mechanics::exact`:
 //! - `splitting`: Strang splitting of h into pieces with exact flows (the free body's
 //!   axisymmetric body and one principal-axis rotation — on SE(3) with the translation joined to
 //!   the axisymmetric piece —, the SE(2) body's rotation and translation) and the
@@ -119,7 +119,7 @@
 //! | `gyrostat`, `underwater-vehicle`, `quadrotor`, `coupled-bodies` | see [`crate::vehicles`] | | | |
 //!
 //! `pendulum-3d` is read as `heavy-top`: the 3D pendulum (a rigid body on a fixed pivot, J about
-//! the pivot, ρ = `center_of_mass`) is the heavy top (`integrators::systems::Pendulum3d`).
+//! the pivot, ρ = `center_of_mass`) is the heavy top (`mechanics::systems::Pendulum3d`).
 //!
 //! A rotation is `{ rotation_vector = [x, y, z] }` (R = exp(ω̂)), `{ quaternion = [w, x, y, z] }`
 //! (scalar first, unit norm to 10⁻⁶, then normalised) or `{ matrix = [[…], […], […]] }` (checked by
@@ -167,7 +167,7 @@ pub enum SystemKind {
     /// Free rigid body on SO(3): Π' = Π × Ω, Ω = I⁻¹Π, R' = R Ω̂.
     FreeRigidBody,
     /// Heavy top: rigid body on SO(3) in uniform gravity with a body-fixed centre of mass. Also
-    /// read as `pendulum-3d`: the 3D pendulum is the heavy top (`integrators::systems::Pendulum3d`).
+    /// read as `pendulum-3d`: the 3D pendulum is the heavy top (`mechanics::systems::Pendulum3d`).
     #[serde(alias = "pendulum-3d")]
     HeavyTop,
     /// Rigid body on SE(3): free, or a satellite in a central gravity field.
@@ -227,9 +227,9 @@ pub enum Method {
     /// the potential's kick (`integrators::splitting::Splitting`): order 2, symmetric, Poisson.
     Splitting,
     /// The exact free-body flow with potential kicks (`integrators::splitting::KineticKick` with
-    /// `integrators::exact::FreeBodyFlow`), coefficients from `splitting`: order 2, 4 or 6.
+    /// `mechanics::exact::FreeBodyFlow`), coefficients from `splitting`: order 2, 4 or 6.
     KineticKick,
-    /// The exact free rigid body flow (`integrators::exact::ExactFreeBody`): Jacobi elliptic
+    /// The exact free rigid body flow (`mechanics::exact::ExactFreeBody`): Jacobi elliptic
     /// functions, any step, cost independent of h.
     Exact,
 }

@@ -14,18 +14,11 @@ use crate::scene::{
 use crate::vehicles::{BODY_COUNTS, WHEEL_COUNTS};
 use faer::{Col, Mat};
 use integrators::dense_output::{DenseState, HermiteStep};
-use integrators::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
 use integrators::forces::{
     BodyInputMap, BodyTorque, ControlInput, Forced, LinearDamping, QuadraticDrag,
 };
-use integrators::modified::{ModifiedLiePoisson, ModifiedScheme};
 use integrators::processing::Processed;
 use integrators::splitting::{KineticFlow, KineticKick, SplitSystem, Splitting, SplittingScheme};
-use integrators::systems::{
-    CoupledBodies as CoupledBodiesSystem, GeneralizedRigidBody, Gyrostat as GyrostatSystem,
-    HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, Quadrotor as QuadrotorSystem,
-    RigidBody, RigidBodySe3 as RigidBodySe3System, Spring, UnderwaterVehicle as VehicleSystem,
-};
 use integrators::{
     Composition, EulerArnold, EulerPoincare, Integrator, IntegratorError, LiePoisson,
     QuaternionRk4, Rkmk4, SolverConfig, SolverKind, StateSnapshot, SymmetricMethod,
@@ -33,6 +26,13 @@ use integrators::{
 use lie_groups::{
     Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Operator, Power, PowerAlgebra,
     Product, ProductAlgebra, Rn, Se2, Se3, So2, So3, SoN, Vector,
+};
+use mechanics::exact::{ExactFreeBody, FreeBodyFlow, FreeBodySe3Flow};
+use mechanics::modified::{ModifiedLiePoisson, ModifiedScheme};
+use mechanics::systems::{
+    CoupledBodies as CoupledBodiesSystem, GeneralizedRigidBody, Gyrostat as GyrostatSystem,
+    HeavyTop as HeavyTopSystem, PlanarBody as PlanarBodySystem, Quadrotor as QuadrotorSystem,
+    RigidBody, RigidBodySe3 as RigidBodySe3System, Spring, UnderwaterVehicle as VehicleSystem,
 };
 use nalgebra::{Matrix3, SVector, Vector3, Vector6};
 
@@ -98,7 +98,7 @@ pub trait Simulation {
 /// not provide is [`SimError::NotYetAvailable`], a method that does not apply to the system
 /// (Euler–Arnold with a potential) [`SimError::Inapplicable`]; never a panic.
 ///
-/// Systems: `integrators::systems::{RigidBody, HeavyTop, RigidBodySe3, PlanarBody,
+/// Systems: `mechanics::systems::{RigidBody, HeavyTop, RigidBodySe3, PlanarBody,
 /// GeneralizedRigidBody<N>}` (the last for N in [`SO_N_SIZES`]). Methods: `LiePoisson` and
 /// `EulerPoincare` with τ = exp or cayley and any θ; `euler-arnold`, the `EulerPoincare`
 /// integrator of the `EulerArnold` system built from the system's inertia (see

@@ -11,7 +11,7 @@
 //!
 //! K ∈ [`WHEEL_COUNTS`] and N ∈ [`BODY_COUNTS`] (each is a separate compiled system). The
 //! vehicle's mass matrix is `M = M_RB + M_A` with M_RB from the mass, inertia and centre of
-//! gravity (`integrators::systems::UnderwaterVehicle::rigid_body_mass_matrix`), and must be
+//! gravity (`mechanics::systems::UnderwaterVehicle::rigid_body_mass_matrix`), and must be
 //! positive definite; its weight is W = m g.
 
 use crate::forces::Forces;
@@ -29,7 +29,7 @@ pub const WHEEL_COUNTS: [usize; 4] = [1, 2, 3, 4];
 /// The body counts N of `coupled-bodies` compiled into lie-sim.
 pub const BODY_COUNTS: [usize; 3] = [2, 3, 4];
 
-/// A spacecraft with K reaction wheels (`integrators::systems::Gyrostat`).
+/// A spacecraft with K reaction wheels (`mechanics::systems::Gyrostat`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Gyrostat {
     /// 𝕀, the whole spacecraft with the wheels locked.
@@ -48,7 +48,7 @@ pub struct Gyrostat {
     pub forces: Option<Forces>,
 }
 
-/// An underwater vehicle on SE(3) (`integrators::systems::UnderwaterVehicle`).
+/// An underwater vehicle on SE(3) (`mechanics::systems::UnderwaterVehicle`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct UnderwaterVehicle {
     /// The vehicle's mass m.
@@ -82,7 +82,7 @@ impl UnderwaterVehicle {
     }
     /// `M = M_RB + M_A`.
     pub fn mass_matrix(&self) -> Matrix6<f64> {
-        integrators::systems::UnderwaterVehicle::rigid_body_mass_matrix(
+        mechanics::systems::UnderwaterVehicle::rigid_body_mass_matrix(
             self.mass,
             &self.inertia,
             &self.center_of_gravity,
@@ -97,7 +97,7 @@ impl UnderwaterVehicle {
     }
 }
 
-/// A quadrotor on SE(3) (`integrators::systems::Quadrotor`).
+/// A quadrotor on SE(3) (`mechanics::systems::Quadrotor`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Quadrotor {
     /// Mass m.
@@ -116,7 +116,7 @@ pub struct Quadrotor {
     pub forces: Option<Forces>,
 }
 
-/// N bodies on SE(3)ᴺ joined by springs (`integrators::systems::CoupledBodies`).
+/// N bodies on SE(3)ᴺ joined by springs (`mechanics::systems::CoupledBodies`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoupledBodies {
     /// Each body's (mass, inertia about its centre of mass).

@@ -18,7 +18,7 @@
 //! no heap allocation per step.
 
 use crate::carried_state;
-use crate::lie_poisson::check_state;
+use crate::checks::check_state;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use core::cell::OnceCell;
@@ -31,7 +31,8 @@ use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 /// integrates Π alone, only allowed without a potential).
 ///
 /// ```
-/// use integrators::{baselines::QuaternionRk4, Integrator, systems::RigidBody};
+/// use integrators::{baselines::QuaternionRk4, Integrator};
+/// use mechanics::RigidBody;
 /// use lie_groups::{LieGroup, So3, Vector};
 /// use nalgebra::Vector3;
 ///

@@ -37,7 +37,8 @@
 //! every quantity lives on the stack.
 
 use crate::carried_state;
-use crate::lie_poisson::{check_state, RENORMALIZE_EVERY};
+use crate::checks::check_state;
+use crate::lie_poisson::RENORMALIZE_EVERY;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use lie_groups::{LieGroup, Vector};
@@ -48,7 +49,8 @@ use lie_groups::{LieGroup, Vector};
 /// alone, only allowed without a potential).
 ///
 /// ```
-/// use integrators::{baselines::Rkmk4, Integrator, systems::RigidBody};
+/// use integrators::{baselines::Rkmk4, Integrator};
+/// use mechanics::RigidBody;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///

@@ -31,7 +31,8 @@
 //!
 //! ```
 //! use integrators::forces::{BodyTorque, Forced, LinearDamping};
-//! use integrators::{Integrator, LiePoisson, systems::RigidBody};
+//! use integrators::{Integrator, LiePoisson};
+//! use mechanics::RigidBody;
 //! use lie_groups::{ExpMap, LieGroup, So3};
 //! use nalgebra::{Matrix3, Vector3};
 //!

@@ -36,7 +36,8 @@ use std::sync::OnceLock;
 ///
 /// ```
 /// use integrators::processing::{Processed, ProcessingScheme};
-/// use integrators::{Integrator, splitting::Splitting, systems::RigidBody};
+/// use integrators::{Integrator, splitting::Splitting};
+/// use mechanics::RigidBody;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///

@@ -3,8 +3,8 @@
 use super::kick::kick;
 use super::SplittingScheme;
 use super::RENORMALIZE_EVERY;
+use crate::checks::check_state;
 use crate::compose::{StateSnapshot, SymmetricMethod};
-use crate::lie_poisson::check_state;
 use crate::{Integrator, IntegratorError, MethodInfo, System};
 use lie_groups::{LieGroup, Vector};
 

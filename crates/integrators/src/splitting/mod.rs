@@ -9,7 +9,7 @@
 //!   `μ(t) = Ad*_{exp(tξᵢ)} μ`, `g(t) = g exp(tξᵢ)` (a rotation about a principal axis aᵢ,
 //!   `hᵢ = (aᵢ·Π)²/2Iᵢ`; a translation); otherwise a closed form the system provides (the free
 //!   body's axisymmetric piece `|Π|²/2I_r + ½(1/I_s − 1/I_r)(a_s·Π)²`, the product of two
-//!   commuting one-parameter flows: [`crate::systems::RigidBody`]).
+//!   commuting one-parameter flows: `mechanics::RigidBody`).
 //! - The **potential piece** V(g): g is fixed, so its flow is the kick `μ ↦ μ + t F(g)`,
 //!   `F(g) = −T*_e L_g dV(g)`.
 //! - **External forces** ([`crate::forces::Forced`] systems): F_ext(t, g, ξ) joins the kick at the
@@ -18,7 +18,8 @@
 //!   drag) are kicked by the implicit midpoint rule (a fixed-point iteration, still explicit in the
 //!   sense of no Newton matrix), symmetric and of order 2.
 //! - A whole **exact kinetic flow** ([`KineticFlow`]): the flow of h itself, when it is known in
-//!   closed form (the axisymmetric body, [`AxisymmetricFlow`]; the general free body).
+//!   closed form (in the `mechanics` crate: the axisymmetric body, `mechanics::exact::AxisymmetricFlow`;
+//!   the general free body, `mechanics::exact::FreeBodyFlow`).
 //!
 //! Every piece's flow is a Poisson map that maps each coadjoint orbit to itself, so every splitting
 //! is a Poisson integrator, keeps the Casimirs of an invariant system to round-off, and keeps the
@@ -33,7 +34,8 @@
 //!
 //! ## Example: the splitting of the free rigid body, composed to order 6
 //! ```
-//! use integrators::{splitting::Splitting, Composition, CompositionScheme, Integrator, systems::RigidBody};
+//! use integrators::{splitting::Splitting, Composition, CompositionScheme, Integrator};
+//! use mechanics::RigidBody;
 //! use lie_groups::{LieGroup, So3};
 //! use nalgebra::Vector3;
 //!
@@ -48,14 +50,12 @@
 //! # Ok::<(), integrators::IntegratorError>(())
 //! ```
 
-mod axisymmetric_flow;
 mod kick;
 mod kinetic_kick;
 mod scheme;
 mod split_system;
 mod strang;
 
-pub use axisymmetric_flow::AxisymmetricFlow;
 pub use kick::KICK_MAX_ITERATIONS;
 
 /// A splitting renormalizes g onto the group every this many steps. Each piece's flow multiplies

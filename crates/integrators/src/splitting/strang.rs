@@ -3,8 +3,8 @@
 use super::kick::kick;
 use super::SplitSystem;
 use super::RENORMALIZE_EVERY;
+use crate::checks::check_state;
 use crate::compose::{StateSnapshot, SymmetricMethod};
-use crate::lie_poisson::check_state;
 use crate::{Integrator, IntegratorError, MethodInfo};
 use core::marker::PhantomData;
 use lie_groups::{LieGroup, Vector};
@@ -37,7 +37,8 @@ use lie_groups::{LieGroup, Vector};
 /// implicit midpoint rule is not a group in its time).
 ///
 /// ```
-/// use integrators::{splitting::Splitting, Integrator, systems::HeavyTop};
+/// use integrators::{splitting::Splitting, Integrator};
+/// use mechanics::HeavyTop;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///

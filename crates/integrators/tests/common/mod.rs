@@ -85,7 +85,7 @@ pub fn r0() -> Matrix3<f64> {
 /// `T*_e L_R dV = mg χ × Γ` and the force is `F = mg Γ × χ` (Π̇ = Π × Ω + mg Γ × χ).
 #[derive(Debug, Clone)]
 pub struct TestHeavyTop {
-    pub body: integrators::systems::RigidBody,
+    pub body: mechanics::systems::RigidBody,
     pub mgchi: Vector3<f64>,
 }
 
@@ -296,7 +296,7 @@ impl LinearSplitting {
 /// own (an axisymmetric body plus one rotation): three pieces on
 /// `RigidBody::principal_piece_velocity` with the trait's generic exp / Ad* flows.
 #[derive(Clone, Debug)]
-pub struct PrincipalAxes(pub integrators::systems::RigidBody);
+pub struct PrincipalAxes(pub mechanics::systems::RigidBody);
 
 impl integrators::System<So3> for PrincipalAxes {
     fn hamiltonian(&self, mu: &Vector3<f64>) -> f64 {

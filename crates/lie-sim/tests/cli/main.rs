@@ -1,0 +1,12 @@
+//! The lie-sim crate's integration tests, one binary: a module per topic.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod choose;
+mod cli;
+mod dense_output;
+mod outputs;
+mod reference;
+mod trade;
+mod vehicles;

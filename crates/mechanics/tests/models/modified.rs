@@ -1,0 +1,371 @@
+//! The modified-Hamiltonian Lie–Poisson methods (`mechanics::modified`, θ ∈ {½, 0}, order 4 and
+//! 6): H̃'s derivatives against finite differences, the generated H₂ table against the closed
+//! form, fitted orders against the exact free-body flow, invariants, reversibility, bad input.
+
+use crate::common::{fitted_order, r0};
+use integrators::{Integrator, IntegratorError, LiePoisson, System};
+use lie_groups::{Cayley, ExpMap, LieGroup, So3};
+use mechanics::exact::FreeBodyFlow;
+use mechanics::modified::{ModifiedLiePoisson, ModifiedRigidBody, ModifiedScheme, ModifiedTau};
+use mechanics::RigidBody;
+use nalgebra::{Matrix3, Vector3};
+
+fn bodies() -> Vec<RigidBody> {
+    let full = Matrix3::new(2.0, 0.3, -0.2, 0.3, 1.5, 0.1, -0.2, 0.1, 3.0);
+    vec![
+        RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+        RigidBody::new(full).unwrap(),
+    ]
+}
+
+fn pi0() -> Vector3<f64> {
+    Vector3::new(0.9, 0.5, -0.7)
+}
+
+/// Every (θ, order) the module derives.
+fn schemes() -> Vec<ModifiedScheme> {
+    [(0.5, 4), (0.5, 6), (0.0, 4), (0.0, 6)]
+        .into_iter()
+        .map(|(theta, order)| ModifiedScheme::new(theta, order).unwrap())
+        .collect()
+}
+
+/// ∂H̃/∂Π and ∂²H̃/∂Π² against central differences of H̃ and of ∂H̃/∂Π, for every scheme, at a
+/// step (h = 0.3) where the modification is a visible part of H̃ (h²H₂ ≈ 5 % of H here).
+fn derivatives_match_finite_differences<T: ModifiedTau>() {
+    for body in bodies() {
+        for scheme in schemes() {
+            let m = ModifiedRigidBody::<T>::new(body.clone(), scheme, 0.3).unwrap();
+            let p = pi0();
+            let d = 1e-5;
+            let (v, hess) = (m.velocity(&p), m.hessian(&p));
+            for i in 0..3 {
+                let e = Vector3::ith(i, d);
+                let fd = (m.hamiltonian(&(p + e)) - m.hamiltonian(&(p - e))) / (2.0 * d);
+                assert!(
+                    (fd - v[i]).abs() < 1e-9,
+                    "{scheme:?} gradient {i}: {fd} vs {}",
+                    v[i]
+                );
+                let fdv = (m.velocity(&(p + e)) - m.velocity(&(p - e))) / (2.0 * d);
+                assert!(
+                    (fdv - hess.column(i)).norm() < 1e-8,
+                    "{scheme:?} Hessian column {i}"
+                );
+            }
+            assert!(
+                (hess - hess.transpose()).norm() < 1e-15,
+                "Hessian symmetric"
+            );
+            // The Legendre map inverts the velocity.
+            assert!((m.velocity(&m.momentum(&v)) - v).norm() < 1e-13);
+            // The modification is what the tables say: H − H̃ = h²H₂ (+ h⁴H₄ at order 6).
+            let k4 = if scheme.order() == 6 {
+                0.3f64.powi(4)
+            } else {
+                0.0
+            };
+            let expected = 0.09 * m.h2(&p) + k4 * m.h4(&p);
+            assert!(
+                (m.body().hamiltonian(&p) - m.hamiltonian(&p) - expected).abs() < 1e-15,
+                "{scheme:?}: H − H̃ = h²H₂ + h⁴H₄"
+            );
+        }
+    }
+}
+
+/// The generated θ = ½ H₂ table equals the closed form `H₂ = −c (α (Π·Ω)|Ω|² + β Π̇ᵀ𝕀⁻¹Π̇)` of
+/// [`ModifiedTau::H2_WEIGHTS`] (coordinate-free, written independently of the table), on a
+/// diagonal and on a full inertia tensor (the latter checks the principal-frame evaluation). A
+/// wrong sign or a swapped axis in the table or its evaluation fails this by O(1).
+fn generated_h2_equals_closed_form<T: ModifiedTau>() {
+    for body in bodies() {
+        let m = ModifiedRigidBody::<T>::new(body.clone(), ModifiedScheme::default(), 0.1).unwrap();
+        let (c, alpha, beta) = T::H2_WEIGHTS;
+        let u = body.inertia().try_inverse().unwrap();
+        for p in [
+            pi0(),
+            Vector3::new(-0.3, 1.2, 0.4),
+            Vector3::new(2.0, 0.1, -0.5),
+        ] {
+            let om = u * p;
+            let w = p.cross(&om);
+            let closed = -c * (alpha * p.dot(&om) * om.norm_squared() + beta * w.dot(&(u * w)));
+            let table = m.h2(&p);
+            assert!(
+                (table - closed).abs() < 1e-14 * closed.abs().max(1.0),
+                "{}: table {table} vs closed form {closed}",
+                <T as lie_groups::Tau<So3>>::NAME
+            );
+        }
+    }
+}
+
+#[test]
+fn generated_h2_table_equals_the_closed_form_cayley() {
+    generated_h2_equals_closed_form::<Cayley>();
+}
+
+#[test]
+fn generated_h2_table_equals_the_closed_form_exp() {
+    generated_h2_equals_closed_form::<ExpMap>();
+}
+
+#[test]
+fn modified_hamiltonian_derivatives_cayley() {
+    derivatives_match_finite_differences::<Cayley>();
+}
+
+#[test]
+fn modified_hamiltonian_derivatives_exp() {
+    derivatives_match_finite_differences::<ExpMap>();
+}
+
+/// max(|ΔΠ|, ‖ΔR‖) at T against the exact flow.
+fn error_at<I: Integrator<Group = So3>>(mut m: I, body: &RigidBody, h: f64, n: usize) -> f64 {
+    let flow = FreeBodyFlow::new(body);
+    let r = So3::from_matrix(&r0()).unwrap();
+    let (pe, re) = flow.advance(h * n as f64, &pi0(), Some(&r)).unwrap();
+    for _ in 0..n {
+        m.step(h).unwrap();
+    }
+    let dp = (m.momentum() - pe).norm();
+    let dr = (m.configuration().unwrap().as_matrix() - re.unwrap().as_matrix()).norm();
+    dp.max(dr)
+}
+
+/// Errors at T = 2 against the exact flow over the steps `hs`, and the order fitted over those
+/// in the asymptotic range above round-off: errors in [1e-12, 1e-4] (the exact flow's own error
+/// is ~1e-14; above 1e-4 the order-6 Cayley runs are still pre-asymptotic). At least three
+/// points must remain.
+fn fit<T: ModifiedTau>(body: &RigidBody, scheme: Option<ModifiedScheme>, hs: &[f64]) -> f64 {
+    let r = So3::from_matrix(&r0()).unwrap();
+    let errs: Vec<f64> = hs
+        .iter()
+        .map(|&h| {
+            let n = (2.0_f64 / h).round() as usize;
+            match scheme {
+                Some(s) => {
+                    let m = ModifiedLiePoisson::<T>::with_scheme(body.clone(), s, pi0(), Some(r))
+                        .unwrap();
+                    error_at(m, body, h, n)
+                }
+                None => {
+                    let m =
+                        LiePoisson::<So3, T, _>::new(body.clone(), 0.5, pi0(), Some(r)).unwrap();
+                    error_at(m, body, h, n)
+                }
+            }
+        })
+        .collect();
+    let (used_h, used_e): (Vec<f64>, Vec<f64>) = hs
+        .iter()
+        .zip(&errs)
+        .filter(|(_, &e)| (1e-12..=1e-4).contains(&e))
+        .unzip();
+    assert!(used_h.len() >= 3, "{scheme:?}: errors {errs:?}");
+    let p = fitted_order(&used_h, &used_e);
+    eprintln!(
+        "{} {scheme:?}: errors {errs:?}, order {p:.3}",
+        <T as lie_groups::Tau<So3>>::NAME
+    );
+    p
+}
+
+/// Order 4 and 6 for θ = ½ and θ = 0, τ = exp and Cayley, on a diagonal and a full inertia
+/// tensor, fitted over h = 0.8 … 0.025 where the errors are in [1e-12, 1e-4] (see [`fit`]).
+/// Within 0.2 of the design order.
+#[test]
+fn orders_four_and_six_against_exact_flow() {
+    let hs = [0.8, 0.4, 0.2, 0.1, 0.05, 0.025];
+    for body in bodies() {
+        for scheme in schemes() {
+            let hs = &hs[..];
+            for (p, name) in [
+                (fit::<Cayley>(&body, Some(scheme), hs), "cayley"),
+                (fit::<ExpMap>(&body, Some(scheme), hs), "exp"),
+            ] {
+                let design = f64::from(scheme.order());
+                assert!(
+                    (p - design).abs() < 0.2,
+                    "{name} {scheme:?}: fitted order {p}, design {design}"
+                );
+            }
+        }
+        // The unmodified kernel is order 2: the modification is what raises it.
+        let p2 = fit::<Cayley>(&body, None, &[0.025, 0.0125, 0.00625, 0.003125]);
+        assert!((p2 - 2.0).abs() < 0.2, "kernel order {p2}");
+    }
+}
+
+/// The reference itself for a full inertia tensor: the exact flow's velocity at t = 0 is Euler's
+/// Π × Ω (before the principal frame was made right-handed it was −Π × Ω).
+#[test]
+fn exact_flow_reference_full_inertia_matches_euler_equations() {
+    let body = bodies()[1].clone();
+    let flow = FreeBodyFlow::new(&body);
+    let d = 1e-4;
+    let (pp, _) = flow.advance(d, &pi0(), None).unwrap();
+    let (pm, _) = flow.advance(-d, &pi0(), None).unwrap();
+    let fd = (pp - pm) / (2.0 * d);
+    assert!((fd - body.euler_rhs(&pi0())).norm() < 1e-7, "{fd:?}");
+    let (axes, _) = body.principal_frame();
+    assert!((axes.determinant() - 1.0).abs() < 1e-12);
+}
+
+fn method<T: ModifiedTau>(body: RigidBody, scheme: ModifiedScheme) -> ModifiedLiePoisson<T> {
+    let r = Some(So3::from_matrix(&r0()).unwrap());
+    ModifiedLiePoisson::<T>::with_scheme(body, scheme, pi0(), r).unwrap()
+}
+
+/// |Π|² and RΠ to round-off, and the energy bounded without drift (mean |H − H₀| over the first
+/// and the last tenth of 10⁵ steps at h = 0.1, 10⁴ time units), for every scheme.
+fn invariants<T: ModifiedTau>() {
+    for scheme in schemes() {
+        invariants_of::<T>(scheme);
+    }
+}
+
+fn invariants_of<T: ModifiedTau>(scheme: ModifiedScheme) {
+    let body = bodies()[0].clone();
+    let mut m = method::<T>(body, scheme);
+    let (c0, e0) = (m.casimir().unwrap(), m.energy());
+    let m0 = m.configuration().unwrap().as_matrix() * m.momentum();
+    let n = 100_000;
+    let (mut first, mut last, mut cmax, mut mmax) = (0.0, 0.0, 0.0f64, 0.0f64);
+    for k in 0..n {
+        m.step(0.1).unwrap();
+        let de = (m.energy() - e0).abs();
+        if k < n / 10 {
+            first += de;
+        } else if k >= n - n / 10 {
+            last += de;
+        }
+        cmax = cmax.max((m.casimir().unwrap() - c0).abs());
+        mmax = mmax.max((m.configuration().unwrap().as_matrix() * m.momentum() - m0).norm());
+    }
+    let (first, last) = (first / (n / 10) as f64, last / (n / 10) as f64);
+    eprintln!(
+        "{scheme:?}: casimir {cmax:.2e}, momentum map {mmax:.2e}, energy first {first:.3e} last \
+         {last:.3e}"
+    );
+    assert!(cmax < 1e-12, "Casimir drift {cmax}");
+    assert!(mmax < 1e-11, "momentum map drift {mmax}");
+    // Drift beyond round-off: the order-6 exp step's truncation error is only 2e-13 here, and the
+    // rounding of 10⁵ implicit steps adds up to ~5e-13 by itself (~7e-18 a step, the same slight
+    // bias as the exact flow's, docs/work-precision.md), hence the 1e-12 allowance.
+    assert!(last < 1.5 * first + 1e-12, "energy drift: {first} → {last}");
+    assert!(first < 1e-4, "energy error {first}");
+}
+
+#[test]
+fn invariants_cayley() {
+    invariants::<Cayley>();
+}
+
+#[test]
+fn invariants_exp() {
+    invariants::<ExpMap>();
+}
+
+/// Φ_{−h} ∘ Φ_h = id to the solver's tolerance, for every scheme: θ = 0 too (on the free body it
+/// coincides with its adjoint θ = 1). As a negative control, the θ = 0 Lie–Poisson scheme *with*
+/// a potential (the heavy top), where θ = 0 and θ = 1 differ, is not reversible (O(1) off here).
+#[test]
+fn time_reversible() {
+    for scheme in schemes() {
+        reversible(
+            method::<Cayley>(bodies()[1].clone(), scheme),
+            scheme.order(),
+        );
+        reversible(
+            method::<ExpMap>(bodies()[1].clone(), scheme),
+            scheme.order(),
+        );
+    }
+    let top = mechanics::systems::HeavyTop::principal(
+        [1.0, 2.0, 3.0],
+        1.0,
+        9.81,
+        Vector3::new(0.0, 0.1, 0.5),
+    )
+    .unwrap();
+    let mut lp =
+        LiePoisson::<So3, Cayley, _>::new(top, 0.0, pi0(), Some(So3::from_matrix(&r0()).unwrap()))
+            .unwrap();
+    let p0 = lp.momentum();
+    for h in [0.2; 10].into_iter().chain([-0.2; 10]) {
+        lp.step(h).unwrap();
+    }
+    let back = (lp.momentum() - p0).norm();
+    eprintln!("θ = 0 with a potential: back to {back:.2e}");
+    assert!(back > 1e-6, "θ = 0 with a potential came back to {back:e}");
+}
+
+fn reversible<T: ModifiedTau>(mut m: ModifiedLiePoisson<T>, order: u32) {
+    let (t0, p0, r0) = (
+        m.time(),
+        m.momentum(),
+        *m.configuration().unwrap().as_matrix(),
+    );
+    for _ in 0..10 {
+        m.step(0.2).unwrap();
+    }
+    for _ in 0..10 {
+        m.step(-0.2).unwrap();
+    }
+    assert!(
+        (m.momentum() - p0).norm() < 1e-12,
+        "{:e}",
+        (m.momentum() - p0).norm()
+    );
+    assert!((m.configuration().unwrap().as_matrix() - r0).norm() < 1e-12);
+    assert!((m.time() - t0).abs() < 1e-14);
+    assert!(m.info().symmetric && m.info().order == order && !m.info().explicit);
+}
+
+#[test]
+fn bad_input_errors_and_leaves_state_untouched() {
+    let mut m = method::<Cayley>(bodies()[0].clone(), ModifiedScheme::new(0.0, 6).unwrap());
+    m.step(0.1).unwrap();
+    let before = (
+        m.time(),
+        m.momentum(),
+        *m.configuration().unwrap().as_matrix(),
+    );
+    let same = |m: &ModifiedLiePoisson<Cayley>| {
+        (
+            m.time(),
+            m.momentum(),
+            *m.configuration().unwrap().as_matrix(),
+        ) == before
+    };
+    for h in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        assert!(matches!(m.step(h), Err(IntegratorError::NonFinite { .. })));
+        assert!(same(&m));
+    }
+    // A step far beyond the scheme's reach (h|Ω| ≈ 1e3): an error, never a panic.
+    assert!(m.step(1e3).is_err());
+    assert!(same(&m));
+    // It still steps normally afterwards.
+    m.step(0.1).unwrap();
+    let nan = Vector3::new(f64::NAN, 0.0, 1.0);
+    assert!(ModifiedLiePoisson::<ExpMap>::new(bodies()[0].clone(), nan, None).is_err());
+    let scheme = ModifiedScheme::default();
+    assert!(ModifiedRigidBody::<ExpMap>::new(bodies()[0].clone(), scheme, f64::NAN).is_err());
+    // Only θ ∈ {½, 0} and orders 4, 6 were derived: anything else is refused by value.
+    for (theta, order) in [
+        (0.3, 4),
+        (1.0, 4),
+        (f64::NAN, 4),
+        (0.5, 5),
+        (0.5, 8),
+        (0.0, 2),
+    ] {
+        let e = ModifiedScheme::new(theta, order).unwrap_err().to_string();
+        assert!(
+            e.contains(&format!("{theta}")) || e.contains(&format!("order {order}")),
+            "{e}"
+        );
+    }
+}
