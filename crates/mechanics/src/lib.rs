@@ -36,13 +36,13 @@
 //! let pi0 = Vector3::new(0.1, 0.2, 8.0);
 //! let mut kk = KineticKick::new(top, flow, SplittingScheme::blanes_moan_4(), pi0, Some(So3::identity()))?;
 //! // the vertical spatial momentum e₃·RΠ is kept by every piece's flow
-//! let vertical = |kk: &KineticKick<_, _>| (kk.configuration().unwrap().as_matrix() * kk.momentum()).z;
-//! let (e0, m0) = (kk.energy(), vertical(&kk));
+//! let vertical = |r: &So3, pi: Vector3<f64>| (r.as_matrix() * pi).z;
+//! let (e0, m0) = (kk.energy(), vertical(kk.configuration().unwrap(), kk.momentum()));
 //! for _ in 0..1000 {
 //!     kk.step(0.005)?;
 //! }
 //! assert!((kk.energy() - e0).abs() < 1e-6 * e0.abs());
-//! assert!((vertical(&kk) - m0).abs() < 1e-12 * m0.abs());
+//! assert!((vertical(kk.configuration().unwrap(), kk.momentum()) - m0).abs() < 1e-12 * m0.abs());
 //! # Ok::<(), integrators::IntegratorError>(())
 //! ```
 
