@@ -119,7 +119,7 @@ impl<G: LieGroup> InputMap<G> for BodyInputMap<G> {
 /// Its work over a run is `∫ ⟨B(g) u(t), ξ⟩ dt`; the spatial momentum map `Ad*_{g⁻¹} μ` moves by
 /// the applied spatial impulse `∫ Ad*_{g⁻¹} B(g) u dt`, so the components of J that every
 /// column of `Ad*_{g⁻¹} B(g)` misses are kept: an internal torque (a reaction-wheel motor,
-/// [`crate::systems::Gyrostat::wheel_torques`]) leaves the total angular momentum unchanged.
+/// `mechanics::Gyrostat::wheel_torques`) leaves the total angular momentum unchanged.
 #[derive(Debug, Clone)]
 pub struct ControlInput<G: LieGroup, B = BodyInputMap<G>> {
     schedule: Schedule,

@@ -28,7 +28,7 @@
 //!   black-box symmetric method; it could only remove the `[X,[X,E₃]]` part of an order-4
 //!   composition's h⁵ error, and for the triple jump that part is 0.14 against 5.29 on E₅
 //!   (`tools/processing_conditions.txt`). No effective-order-4 scheme is shipped here; order 4 at
-//!   order-2 cost comes from the modified Hamiltonian ([`crate::modified`]).
+//!   order-2 cost comes from the modified Hamiltonian (`mechanics::modified`).
 //! - **grade 5**: E₅ stays (Σγ⁵ = 0 needed); `[X,[X,E₃]] = ad_X [X,E₃]` is removed by a
 //!   processor with `Z = h⁴ c₅ [X,E₃] + …`. Effective order 6 needs Σγ = 1, Σγ³ = Σγ⁵ = 0 —
 //!   three conditions instead of the four of order 6 — and the freedom goes into a much smaller

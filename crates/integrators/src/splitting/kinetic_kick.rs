@@ -11,9 +11,9 @@ use lie_groups::{LieGroup, Vector};
 /// The exact flow of a system's kinetic Hamiltonian h(μ): `(μ, g) ↦ φ_t(μ, g)` solving
 /// `μ̇ = ad*_{∂h/∂μ} μ`, `ġ = g ∂h/∂μ` (§2 of the paper, without the potential).
 ///
-/// Implemented by [`super::AxisymmetricFlow`] (closed form for a body with two equal moments),
-/// [`crate::exact::FreeBodyFlow`] (any rigid body, Jacobi elliptic functions) and
-/// [`crate::exact::FreeBodySe3Flow`] (the free body on SE(3)).
+/// Implemented by `mechanics::exact::AxisymmetricFlow` (closed form for a body with two equal moments),
+/// `mechanics::exact::FreeBodyFlow` (any rigid body, Jacobi elliptic functions) and
+/// `mechanics::exact::FreeBodySe3Flow` (the free body on SE(3)).
 /// `Ok` only with a finite result; on error the arguments are left as they were.
 pub trait KineticFlow<G: LieGroup> {
     /// Advances (μ, g) by the kinetic flow for a time t (of either sign).
