@@ -46,6 +46,39 @@ pub enum IntegratorError {
         /// Why the parameter was refused.
         reason: String,
     },
+    /// A tolerance of an adaptive run that cannot be met: `rtol` or `atol` not finite and > 0,
+    /// or `rtol` below what f64 can deliver ([`crate::adaptive::Tolerance::new`]).
+    #[error("{name} = {value:e} is invalid: it must be {requirement}")]
+    InvalidTolerance {
+        /// Which tolerance (`"rtol"`, `"atol"`).
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// What it must be.
+        requirement: String,
+    },
+    /// The adaptive controller asked for a step below the smallest one that still advances t
+    /// (a few ulps of t, or the run's `min_step`): the tolerance cannot be met there (a
+    /// singularity, or a tolerance the rounding of the state exceeds). The state is the last
+    /// accepted one, at t.
+    #[error("step size underflow at t = {t}: the step {step:e} is below the minimum {minimum:e}")]
+    StepSizeUnderflow {
+        /// The time of the last accepted state.
+        t: f64,
+        /// The step the controller asked for.
+        step: f64,
+        /// The smallest step allowed there.
+        minimum: f64,
+    },
+    /// An adaptive run used up its step budget (`max_steps`, accepted and rejected) before the
+    /// end time; the state is the last accepted one, at t.
+    #[error("{steps} steps taken before reaching the end time; stopped at t = {t}")]
+    TooManySteps {
+        /// Steps attempted.
+        steps: usize,
+        /// The time of the last accepted state.
+        t: f64,
+    },
     /// An error from `lie-groups` (a local map evaluated outside its domain).
     #[error(transparent)]
     Lie(#[from] LieError),

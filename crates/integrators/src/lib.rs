@@ -88,6 +88,7 @@
 
 #![warn(missing_docs)]
 
+pub mod adaptive;
 pub mod baselines;
 mod carried_state;
 pub mod checks;

@@ -13,8 +13,10 @@
 //! [`crate::LiePoisson`] and [`crate::EulerPoincare`]. Measured (`tests/baselines.rs`): order 4 for
 //! both on the free rigid body and the heavy top, and for `Rkmk4` on SE(3).
 
+mod quaternion_pair;
 mod rk4;
 mod rkmk;
 
+pub use quaternion_pair::{QuaternionDop853, QuaternionDopri5, QuaternionPair};
 pub use rk4::QuaternionRk4;
 pub use rkmk::Rkmk4;

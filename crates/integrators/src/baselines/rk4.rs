@@ -56,7 +56,7 @@ pub struct QuaternionRk4<S: System<So3>> {
 
 /// `½ q ⊗ (0, Ω)`: the quaternion velocity of `Ṙ = R Ω̂`.
 #[inline]
-fn quaternion_rate(q: &Quaternion<f64>, omega: &Vector3<f64>) -> Quaternion<f64> {
+pub(crate) fn quaternion_rate(q: &Quaternion<f64>, omega: &Vector3<f64>) -> Quaternion<f64> {
     (q * Quaternion::from_imag(*omega)) * 0.5
 }
 
@@ -67,7 +67,7 @@ fn quaternion_rate(q: &Quaternion<f64>, omega: &Vector3<f64>) -> Quaternion<f64>
 /// runs beside them instead of ahead of them: in a stage of a system with a potential, R is on
 /// the step's critical path (the force at the next stage waits for it).
 #[inline]
-fn rotation(q: &Quaternion<f64>) -> So3 {
+pub(crate) fn rotation(q: &Quaternion<f64>) -> So3 {
     let (w, x, y, z) = (q.w, q.i, q.j, q.k);
     let s = 2.0 / (w * w + x * x + y * y + z * z);
     let (wx, wy, wz) = (w * x, w * y, w * z);

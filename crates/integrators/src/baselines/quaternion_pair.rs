@@ -1,0 +1,409 @@
+//! The plain baseline a scipy user would pick instead of a geometric method: an embedded
+//! explicit Runge–Kutta pair (Dormand–Prince 5(4), DOP853) on (unit quaternion, body momentum)
+//! with error control, the quaternion renormalized after each step.
+//!
+//! The equations are those of [`crate::baselines::QuaternionRk4`] (`q̇ = ½ q ⊗ (0, Ω)`,
+//! `Π̇ = ad*_Ω Π + F(R(q/|q|)) + F_ext`, Ω = ∂h/∂Π) for any system on SO(3), as an ODE in
+//! ℝ⁴ × ℝ³; each step is one step of the pair ([`crate::adaptive::ButcherPair`]), and q ← q/|q|
+//! after it. The error is measured as scipy's `solve_ivp` and Hairer's codes measure it on this
+//! 7-vector: `‖(êᵢ / (atol + rtol·max(|yᵢ|, |y₁ᵢ|)))ᵢ‖_rms` ([`crate::adaptive::Tolerance`]) — so
+//! that it can be compared run for run with `ode_solvers::{Dopri5, Dop853}` on the same
+//! right-hand side (`benches/adaptive.rs`).
+//!
+//! First same as last with renormalization: the last stage of Dormand–Prince is evaluated at
+//! the unnormalized (q₁, Π₁); the quaternion rate is linear in q and the momentum rate reads R(q)
+//! through q/|q|, so the next step's first stage is (q̇/|q₁|, Π̇), exactly, without an
+//! evaluation. Stack only, no heap allocation per step.
+
+use super::rk4::{quaternion_rate, rotation};
+use crate::adaptive::embedded_pair::check_end_time;
+use crate::adaptive::{
+    starting_step, ButcherPair, Controller, DormandPrince54, Dop853, EmbeddedPair, Tolerance,
+};
+use crate::carried_state;
+use crate::checks::check_state;
+use crate::system::force;
+use crate::{Integrator, IntegratorError, MethodInfo, System};
+use core::cell::OnceCell;
+use core::marker::PhantomData;
+use lie_groups::{LieGroup, So3, Vector};
+use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector4};
+
+/// Dormand–Prince 5(4) on (q, Π), scipy's `RK45` on the quaternion equations.
+pub type QuaternionDopri5<S> = QuaternionPair<S, DormandPrince54, 7>;
+/// DOP853 on (q, Π), scipy's `DOP853` on the quaternion equations.
+pub type QuaternionDop853<S> = QuaternionPair<S, Dop853, 12>;
+
+/// An embedded explicit pair on (q, Π) with renormalization, for any system on SO(3) (see the
+/// module page).
+///
+/// ```
+/// use integrators::adaptive::{Adaptive, Tolerance};
+/// use integrators::baselines::QuaternionDop853;
+/// use integrators::Integrator;
+/// use mechanics::RigidBody;
+/// use lie_groups::{LieGroup, So3};
+/// use nalgebra::Vector3;
+///
+/// let body = RigidBody::principal(2.0, 3.0, 4.0)?;
+/// let method = QuaternionDop853::new(body, Vector3::new(1.0, 0.5, -0.3), Some(So3::identity()))?;
+/// let mut run = Adaptive::new(method, Tolerance::new(1e-10, 1e-10)?);
+/// run.advance_to(10.0)?;
+/// assert_eq!(run.method().time(), 10.0);
+/// # Ok::<(), integrators::IntegratorError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct QuaternionPair<S: System<So3>, P: ButcherPair<N>, const N: usize> {
+    system: S,
+    t: f64,
+    pi: Vector3<f64>,
+    /// The unit quaternion of the attitude, where it is reconstructed.
+    q: Option<Quaternion<f64>>,
+    /// R(q), computed when [`Integrator::configuration`] asks for it; emptied by every step.
+    rotation: OnceCell<So3>,
+    /// (q̇, Π̇) at the current state where already evaluated (q̇ = 0 without the attitude).
+    first: Option<(Quaternion<f64>, Vector3<f64>)>,
+    pair: PhantomData<P>,
+}
+
+/// A step computed but not yet taken.
+struct Candidate {
+    q1: Option<Quaternion<f64>>,
+    pi1: Vector3<f64>,
+    /// Σ (estimate/scale)² of the estimators E and E_LOW, and the components counted.
+    sum: f64,
+    sum_low: f64,
+    n: usize,
+    /// (q̇, Π̇) of a last stage at (t + h, q₁, Π₁).
+    last: Option<(Quaternion<f64>, Vector3<f64>)>,
+}
+
+impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> {
+    /// Builds the method at t = 0 from Π₀ and optionally R₀. Errors: non-finite Π₀ or R₀, R₀
+    /// missing for a system that needs it.
+    pub fn new(
+        system: S,
+        pi0: Vector3<f64>,
+        r0: Option<So3>,
+    ) -> Result<Self, IntegratorError> {
+        check_state(&system, &pi0, "momentum Π", r0.as_ref())?;
+        let q = r0.map(|r| UnitQuaternion::from(r).into_inner());
+        let rotation = r0.map_or_else(OnceCell::new, OnceCell::from);
+        Ok(Self {
+            system,
+            t: 0.0,
+            pi: pi0,
+            q,
+            rotation,
+            first: None,
+            pair: PhantomData,
+        })
+    }
+    /// The system.
+    pub fn system(&self) -> &S {
+        &self.system
+    }
+    /// The unit quaternion of the attitude, where it is reconstructed.
+    pub fn quaternion(&self) -> Option<UnitQuaternion<f64>> {
+        self.q.map(UnitQuaternion::new_unchecked)
+    }
+
+    /// (q̇, Π̇) at a stage, Ω = `v(Π)`; q̇ = 0 without the attitude.
+    #[inline(always)]
+    fn rates(
+        &self,
+        v: &impl Fn(&Vector3<f64>) -> Vector3<f64>,
+        t: f64,
+        q: Option<&Quaternion<f64>>,
+        pi: &Vector3<f64>,
+    ) -> (Quaternion<f64>, Vector3<f64>) {
+        let omega = v(pi);
+        let mut dpi = So3::ad_dual_apply(&omega, pi);
+        if self.system.has_potential() || self.system.is_forced() {
+            let r = q.filter(|_| self.system.needs_configuration()).map(rotation);
+            if let Some(f) = force(&self.system, r.as_ref()) {
+                dpi += f;
+            }
+            if self.system.is_forced() {
+                dpi += self.system.external_force(t, r.as_ref(), &omega);
+            }
+        }
+        let dq = q.map_or(Quaternion::new(0.0, 0.0, 0.0, 0.0), |q| {
+            quaternion_rate(q, &omega)
+        });
+        (dq, dpi)
+    }
+
+    /// The stages of a step of size h with the weights b, from the first stage's rates.
+    #[inline(always)]
+    fn stages(
+        &self,
+        v: &impl Fn(&Vector3<f64>) -> Vector3<f64>,
+        h: f64,
+        first: (Quaternion<f64>, Vector3<f64>),
+        b: &[f64; N],
+        tolerance: Option<&Tolerance>,
+    ) -> Candidate {
+        let pi = carried_state::read(&self.pi);
+        let q = self
+            .q
+            .map(|q| Quaternion::from(carried_state::read(&q.coords)));
+        let mut ls = [Quaternion::<f64>::new(0.0, 0.0, 0.0, 0.0); N];
+        let mut ks = [Vector3::<f64>::zeros(); N];
+        (ls[0], ks[0]) = first;
+        let mut last = None;
+        for i in 1..N {
+            let mut dq = Vector4::<f64>::zeros();
+            let mut dpi = Vector3::<f64>::zeros();
+            for j in 0..i {
+                let a = P::A[i][j];
+                if a != 0.0 {
+                    dq += ls[j].coords * a;
+                    dpi += ks[j] * a;
+                }
+            }
+            let q_i = q.map(|q| Quaternion::from(q.coords + dq * h));
+            let pi_i = pi + dpi * h;
+            let (l, k) = self.rates(v, self.t + P::C[i] * h, q_i.as_ref(), &pi_i);
+            if P::FSAL && i == N - 1 && *b == P::B {
+                last = Some((l, k));
+            }
+            ls[i] = l;
+            ks[i] = k;
+        }
+        let mut dq = Vector4::<f64>::zeros();
+        let mut dpi = Vector3::<f64>::zeros();
+        let mut eq = Vector4::<f64>::zeros();
+        let mut epi = Vector3::<f64>::zeros();
+        let mut lq = Vector4::<f64>::zeros();
+        let mut lpi = Vector3::<f64>::zeros();
+        for i in 0..N {
+            if b[i] != 0.0 {
+                dq += ls[i].coords * b[i];
+                dpi += ks[i] * b[i];
+            }
+            if tolerance.is_some() {
+                if P::E[i] != 0.0 {
+                    eq += ls[i].coords * P::E[i];
+                    epi += ks[i] * P::E[i];
+                }
+                if let Some(e_low) = P::E_LOW {
+                    if e_low[i] != 0.0 {
+                        lq += ls[i].coords * e_low[i];
+                        lpi += ks[i] * e_low[i];
+                    }
+                }
+            }
+        }
+        let q1 = q.map(|q| Quaternion::from(q.coords + dq * h));
+        let pi1 = pi + dpi * h;
+        let (mut sum, mut sum_low, mut n) = (0.0, 0.0, 3);
+        if let Some(tol) = tolerance {
+            for i in 0..3 {
+                let s = tol.scale(pi[i], pi1[i]);
+                sum += (h * epi[i] / s).powi(2);
+                sum_low += (h * lpi[i] / s).powi(2);
+            }
+            if let (Some(q), Some(q1)) = (q, q1) {
+                for i in 0..4 {
+                    let s = tol.scale(q.coords[i], q1.coords[i]);
+                    sum += (h * eq[i] / s).powi(2);
+                    sum_low += (h * lq[i] / s).powi(2);
+                }
+                n += 4;
+            }
+        }
+        Candidate {
+            q1,
+            pi1,
+            sum,
+            sum_low,
+            n,
+            last,
+        }
+    }
+
+    /// (q̇, Π̇) at the current state, from the cache where a stage already evaluated it.
+    #[inline(always)]
+    fn first_stage(&mut self) -> (Quaternion<f64>, Vector3<f64>) {
+        if let Some(first) = self.first {
+            return first;
+        }
+        let first = self.rates(
+            &|pi: &Vector3<f64>| self.system.velocity(pi),
+            self.t,
+            self.q.as_ref(),
+            &self.pi,
+        );
+        self.first = Some(first);
+        first
+    }
+
+    /// The candidate step of size h with the weights b.
+    #[inline(always)]
+    fn candidate(&mut self, h: f64, b: &[f64; N], tolerance: Option<&Tolerance>) -> Candidate {
+        let first = self.first_stage();
+        // The system's shape is tested once per step, not in each stage.
+        match self.system.diagonal_velocity() {
+            Some(a) => self.stages(&|pi| pi.component_mul(&a), h, first, b, tolerance),
+            None => self.general_stages(h, first, b, tolerance),
+        }
+    }
+
+    /// [`Self::stages`] with Ω from [`System::velocity`], out of line so that the common step
+    /// stays small enough for the compiler to inline the system's force into its stages.
+    #[inline(never)]
+    fn general_stages(
+        &self,
+        h: f64,
+        first: (Quaternion<f64>, Vector3<f64>),
+        b: &[f64; N],
+        tolerance: Option<&Tolerance>,
+    ) -> Candidate {
+        self.stages(&|pi| self.system.velocity(pi), h, first, b, tolerance)
+    }
+
+    /// Takes the candidate (q renormalized), the time becoming `t1`; `Err` where it is not
+    /// finite (state untouched).
+    #[inline(always)]
+    fn commit(&mut self, c: Candidate, t1: f64) -> Result<(), IntegratorError> {
+        let norm = c.q1.map_or(1.0, |q| q.norm());
+        if !(c.pi1.is_finite() && norm.is_finite() && norm > 0.0) {
+            return Err(IntegratorError::NonFinite {
+                what: "Runge–Kutta state (q, Π)_{k+1}",
+            });
+        }
+        self.q = c.q1.map(|q| q / norm);
+        self.rotation = OnceCell::new();
+        self.pi = c.pi1;
+        // The last stage's rates at the unnormalized q₁: q̇ is linear in q, Π̇ reads q/|q|.
+        self.first = c.last.map(|(l, k)| (l / norm, k));
+        self.t = t1;
+        Ok(())
+    }
+
+    /// A fixed step of the embedded solution (weights b − e, or b − e_low with `low`), for
+    /// measuring the embedded orders (`tests/methods/adaptive_orders.rs`).
+    pub fn step_embedded(&mut self, h: f64, low: bool) -> Result<(), IntegratorError> {
+        let weights = match (low, P::E_LOW) {
+            (false, _) => P::E,
+            (true, Some(e)) => e,
+            (true, None) => {
+                return Err(IntegratorError::InvalidParameter {
+                    reason: format!("{} has one error estimator", P::NAME),
+                })
+            }
+        };
+        let t1 = self.t + h;
+        check_end_time(self.t, t1)?;
+        let b_hat: [f64; N] = core::array::from_fn(|i| P::B[i] - weights[i]);
+        let c = self.candidate(h, &b_hat, None);
+        self.commit(c, t1)
+    }
+}
+
+impl<S: System<So3>, P: ButcherPair<N>, const N: usize> Integrator for QuaternionPair<S, P, N> {
+    type Group = So3;
+
+    fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
+        if !h.is_finite() {
+            return Err(IntegratorError::NonFinite { what: "step h" });
+        }
+        let c = self.candidate(h, &P::B, None);
+        self.commit(c, self.t + h)
+    }
+    fn time(&self) -> f64 {
+        self.t
+    }
+    fn momentum(&self) -> Vector3<f64> {
+        self.pi
+    }
+    fn velocity(&self) -> Vector3<f64> {
+        self.system.velocity(&self.pi)
+    }
+    fn momentum_rate(&self) -> Vector3<f64> {
+        crate::dense_output::momentum_rate(&self.system, self.t, &self.pi, self.configuration())
+    }
+    fn configuration(&self) -> Option<&So3> {
+        self.q
+            .as_ref()
+            .map(|q| self.rotation.get_or_init(|| rotation(q)))
+    }
+    fn energy(&self) -> f64 {
+        self.system.energy(&self.pi, self.configuration())
+    }
+    fn casimir(&self) -> Option<f64> {
+        self.system.casimir(&self.pi)
+    }
+    fn method_name(&self) -> String {
+        format!("{}(quaternion)", P::NAME)
+    }
+    /// Order p of the pair, explicit; q is renormalized every step, so R stays on SO(3), and
+    /// nothing else is kept.
+    fn info(&self) -> MethodInfo {
+        MethodInfo::plain(P::ORDER)
+    }
+}
+
+impl<S: System<So3> + Clone, P: ButcherPair<N>, const N: usize> EmbeddedPair
+    for QuaternionPair<S, P, N>
+{
+    fn orders(&self) -> (u32, u32) {
+        (P::ORDER, P::EMBEDDED_ORDER)
+    }
+    fn controller(&self) -> Controller {
+        P::controller()
+    }
+    fn error_exponent(&self) -> u32 {
+        P::ERROR_EXPONENT
+    }
+    #[inline]
+    fn try_step_to(&mut self, t1: f64, tolerance: &Tolerance) -> Result<f64, IntegratorError> {
+        let h = check_end_time(self.t, t1)?;
+        let c = self.candidate(h, &P::B, Some(tolerance));
+        let err = P::error_norm(c.sum, c.sum_low, c.n);
+        if !err.is_finite() {
+            return Ok(f64::INFINITY);
+        }
+        if err <= 1.0 && self.commit(c, t1).is_err() {
+            return Ok(f64::INFINITY);
+        }
+        Ok(err)
+    }
+    fn step_to(&mut self, t1: f64) -> Result<(), IntegratorError> {
+        let h = check_end_time(self.t, t1)?;
+        let c = self.candidate(h, &P::B, None);
+        self.commit(c, t1)
+    }
+    fn starting_step(&mut self, direction: f64, tolerance: &Tolerance) -> f64 {
+        let (l0, k0) = self.first_stage();
+        let (pi0, q0) = (self.pi, self.q);
+        let count = if q0.is_some() { 7.0 } else { 3.0 };
+        let norm = |y_pi: &Vector3<f64>, y_q: Option<Vector4<f64>>| {
+            let mut s = (0..3)
+                .map(|i| (y_pi[i] / tolerance.scale(pi0[i], 0.0)).powi(2))
+                .sum::<f64>();
+            if let (Some(q0), Some(y_q)) = (q0, y_q) {
+                s += (0..4)
+                    .map(|i| (y_q[i] / tolerance.scale(q0.coords[i], 0.0)).powi(2))
+                    .sum::<f64>();
+            }
+            (s / count).sqrt()
+        };
+        let d0 = norm(&pi0, q0.map(|q| q.coords));
+        let d1 = norm(&k0, q0.map(|_| l0.coords));
+        let sign = if direction < 0.0 { -1.0 } else { 1.0 };
+        let d2 = |h0: f64| {
+            let h = sign * h0;
+            let q1 = q0.map(|q| Quaternion::from(q.coords + l0.coords * h));
+            let (l1, k1) = self.rates(
+                &|pi: &Vector3<f64>| self.system.velocity(pi),
+                self.t + h,
+                q1.as_ref(),
+                &(pi0 + k0 * h),
+            );
+            norm(&(k1 - k0), q0.map(|_| l1.coords - l0.coords)) / h0
+        };
+        starting_step(P::ERROR_EXPONENT, d0, d1, d2)
+    }
+}
