@@ -239,13 +239,12 @@ impl<M: EmbeddedPair> Adaptive<M> {
             });
         }
         let within = |t: f64| !ahead(t, start) && !ahead(t_end, t);
-        let mut next_time = times.iter().position(|&t| !ahead(t, start)).unwrap_or(times.len());
+        let mut next_time = times
+            .iter()
+            .position(|&t| !ahead(t, start))
+            .unwrap_or(times.len());
         while next_time < times.len() && times[next_time] == start {
-            observe(
-                start,
-                &self.method.momentum(),
-                self.method.configuration(),
-            );
+            observe(start, &self.method.momentum(), self.method.configuration());
             next_time += 1;
         }
         let mut run = DenseRun {
@@ -309,7 +308,10 @@ impl<M: EmbeddedPair> Adaptive<M> {
                 step_hits.truncate(i + 1);
                 run.stopped = true;
             }
-            let stop = step_hits.last().filter(|_| run.stopped).map(|(hit, _)| hit.t);
+            let stop = step_hits
+                .last()
+                .filter(|_| run.stopped)
+                .map(|(hit, _)| hit.t);
             let until = stop.unwrap_or(t1);
             while next_time < times.len() && !ahead(until, times[next_time]) {
                 let t = times[next_time];

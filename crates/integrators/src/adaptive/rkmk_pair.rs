@@ -24,8 +24,10 @@
 //! (1/12) ad², order 8 (DOP853) the four of ½, 1/12, −1/720 (ad⁴) and 1/30240 (ad⁶), one bracket
 //! per power. The sign of the ½ term is that of this crate's g = g_k exp(Θ) (B₁ = +½, see
 //! [`crate::baselines::Rkmk4`]). `tests/methods/adaptive_orders.rs` fits the orders on SO(3)
-//! (free body and heavy top) and SE(3); with the ad² term dropped the fitted order of the
-//! Dormand–Prince pair falls to 4.
+//! (free body and heavy top) and SE(3). Each kept term is needed, as the argument predicts
+//! (dropping the term in ad^m leaves a local error O(h^{m+2}), order m + 1): with the ad² term
+//! dropped Dormand–Prince was measured at order 3.0, with ad⁴ dropped DOP853 at 5.0, with ad⁶
+//! dropped at 7.0, on all three problems.
 //!
 //! **Error on the group.** The two solutions are `g = g_k exp(Θ)` and `ĝ = g_k exp(Θ̂)`,
 //! `Θ − Θ̂ = h Σ eᵢKᵢ` (e = b − b̂); by the Baker–Campbell–Hausdorff formula
@@ -39,8 +41,8 @@
 //! fixed-size groups every quantity lives on the stack.
 
 use super::embedded_pair::check_end_time;
-use super::{starting_step, ButcherPair, Controller, DormandPrince54, Dop853, EmbeddedPair};
 use super::Tolerance;
+use super::{starting_step, ButcherPair, Controller, Dop853, DormandPrince54, EmbeddedPair};
 use crate::carried_state;
 use crate::checks::check_state;
 use crate::lie_poisson::RENORMALIZE_EVERY;
@@ -56,15 +58,7 @@ pub type RkmkDop853<G, S> = RkmkPair<G, S, Dop853, 12>;
 
 /// The coefficients `B_m/m!` of `(d^L exp_Θ)⁻¹ = Σ (B_m/m!) ad_Θ^m` in this crate's convention
 /// (B₁ = +½), m = 0 … 6.
-const DEXP_INV: [f64; 7] = [
-    1.0,
-    0.5,
-    1.0 / 12.0,
-    0.0,
-    -1.0 / 720.0,
-    0.0,
-    1.0 / 30240.0,
-];
+const DEXP_INV: [f64; 7] = [1.0, 0.5, 1.0 / 12.0, 0.0, -1.0 / 720.0, 0.0, 1.0 / 30240.0];
 
 /// The highest power of ad kept for a method of order p: q = p − 2, lowered to the last nonzero
 /// coefficient (B₃ = B₅ = 0).
@@ -331,9 +325,7 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
     /// Takes the candidate, the time becoming `t1`.
     fn commit(&mut self, c: Candidate<G>, t1: f64) {
         let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
-        self.g = c
-            .g1
-            .map(|g1| if renormalize { g1.normalize() } else { g1 });
+        self.g = c.g1.map(|g1| if renormalize { g1.normalize() } else { g1 });
         self.unnormalized = if renormalize {
             0
         } else {

@@ -18,7 +18,7 @@
 use super::rk4::{quaternion_rate, rotation};
 use crate::adaptive::embedded_pair::check_end_time;
 use crate::adaptive::{
-    starting_step, ButcherPair, Controller, DormandPrince54, Dop853, EmbeddedPair, Tolerance,
+    starting_step, ButcherPair, Controller, Dop853, DormandPrince54, EmbeddedPair, Tolerance,
 };
 use crate::carried_state;
 use crate::checks::check_state;
@@ -81,11 +81,7 @@ struct Candidate {
 impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> {
     /// Builds the method at t = 0 from Π₀ and optionally R₀. Errors: non-finite Π₀ or R₀, R₀
     /// missing for a system that needs it.
-    pub fn new(
-        system: S,
-        pi0: Vector3<f64>,
-        r0: Option<So3>,
-    ) -> Result<Self, IntegratorError> {
+    pub fn new(system: S, pi0: Vector3<f64>, r0: Option<So3>) -> Result<Self, IntegratorError> {
         check_state(&system, &pi0, "momentum Π", r0.as_ref())?;
         let q = r0.map(|r| UnitQuaternion::from(r).into_inner());
         let rotation = r0.map_or_else(OnceCell::new, OnceCell::from);
@@ -120,7 +116,9 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
         let omega = v(pi);
         let mut dpi = So3::ad_dual_apply(&omega, pi);
         if self.system.has_potential() || self.system.is_forced() {
-            let r = q.filter(|_| self.system.needs_configuration()).map(rotation);
+            let r = q
+                .filter(|_| self.system.needs_configuration())
+                .map(rotation);
             if let Some(f) = force(&self.system, r.as_ref()) {
                 dpi += f;
             }

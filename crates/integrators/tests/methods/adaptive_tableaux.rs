@@ -85,14 +85,25 @@ fn assert_order<const N: usize>(label: &str, a: &[[f64; N]; N], b: &[f64; N], or
         assert!(r < 1e-13, "{label}: order-{k} condition violated by {r:e}");
     }
     let r = residual(&all, a, b, order + 1);
-    println!("{label}: order-{} conditions, largest residual {r:.1e}", order + 1);
-    assert!(r > 1e-6, "{label} satisfies the conditions of order {}", order + 1);
+    println!(
+        "{label}: order-{} conditions, largest residual {r:.1e}",
+        order + 1
+    );
+    assert!(
+        r > 1e-6,
+        "{label} satisfies the conditions of order {}",
+        order + 1
+    );
 }
 
 fn row_sums_are_nodes<const N: usize>(label: &str, a: &[[f64; N]; N], c: &[f64; N]) {
     for i in 0..N {
         let s: f64 = a[i].iter().sum();
-        assert!((s - c[i]).abs() < 1e-14, "{label}: Σⱼ a{i}ⱼ = {s} ≠ c{i} = {}", c[i]);
+        assert!(
+            (s - c[i]).abs() < 1e-14,
+            "{label}: Σⱼ a{i}ⱼ = {s} ≠ c{i} = {}",
+            c[i]
+        );
         for j in i..N {
             assert_eq!(a[i][j], 0.0, "{label}: a{i}{j} on or above the diagonal");
         }
@@ -111,7 +122,11 @@ fn rooted_trees_are_counted_as_in_a000081() {
         .collect();
     assert_eq!(counts, [1, 1, 2, 4, 9, 20, 48, 115]);
     // γ of the tall tree of order 4 ([[[•]]]) is 4·3·2·1, of the bushy one ([•,•,•]) is 4.
-    let order4: Vec<f64> = all.iter().filter(|t| t.order == 4).map(|t| t.gamma).collect();
+    let order4: Vec<f64> = all
+        .iter()
+        .filter(|t| t.order == 4)
+        .map(|t| t.gamma)
+        .collect();
     assert!(order4.contains(&24.0) && order4.contains(&4.0));
 }
 
@@ -143,6 +158,8 @@ fn a_perturbed_coefficient_breaks_the_order_conditions() {
     let mut a = P::A;
     a[4][3] *= 1.0 + 1e-7;
     let all = trees(5);
-    let worst = (1..=5).map(|k| residual(&all, &a, &P::B, k)).fold(0.0, f64::max);
+    let worst = (1..=5)
+        .map(|k| residual(&all, &a, &P::B, k))
+        .fold(0.0, f64::max);
     assert!(worst > 1e-9, "perturbation not seen: {worst:e}");
 }

@@ -3,6 +3,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod adaptive_orders;
 mod adaptive_tableaux;
 mod assembled_step;
 mod baselines;
