@@ -4,6 +4,7 @@
 mod common;
 
 mod adaptive_orders;
+mod adaptive_pairs;
 mod adaptive_tableaux;
 mod assembled_step;
 mod baselines;
