@@ -6,6 +6,7 @@ mod common;
 mod adaptive_orders;
 mod adaptive_pairs;
 mod adaptive_tableaux;
+mod adaptive_tolerance;
 mod assembled_step;
 mod baselines;
 mod casimir_drift;
