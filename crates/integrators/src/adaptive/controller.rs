@@ -84,7 +84,7 @@ impl Controller {
     /// stages overflowed, is a rejection by the smallest factor) and remembers what it needs.
     #[inline]
     pub fn decide(&mut self, err: f64) -> Decision {
-        if !(err <= 1.0) {
+        if err.is_nan() || err > 1.0 {
             let factor = if err.is_finite() {
                 (self.safety * err.powf(-self.reject_exponent)).max(self.min_factor)
             } else {
@@ -99,7 +99,10 @@ impl Controller {
         let mut factor = if err == 0.0 {
             self.max_factor
         } else {
-            let fac = self.safety * err.powf(-self.alpha) * self.err_prev.powf(self.beta);
+            let mut fac = self.safety * err.powf(-self.alpha);
+            if self.beta != 0.0 {
+                fac *= self.err_prev.powf(self.beta);
+            }
             fac.clamp(self.min_factor, self.max_factor)
         };
         if self.rejected {

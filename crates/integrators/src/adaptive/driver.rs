@@ -93,7 +93,7 @@ impl<M: EmbeddedPair> Adaptive<M> {
     }
     /// The same run with steps of at most `max_step`. Errors: not > 0 (∞ is allowed).
     pub fn with_max_step(self, max_step: f64) -> Result<Self, IntegratorError> {
-        if !(max_step > 0.0) {
+        if max_step.is_nan() || max_step <= 0.0 {
             return Err(IntegratorError::InvalidParameter {
                 reason: format!("max_step = {max_step:e} must be > 0"),
             });
@@ -158,7 +158,7 @@ impl<M: EmbeddedPair> Adaptive<M> {
             }
             let remaining = (t_end - t).abs();
             let lands = 1.01 * h >= remaining;
-            if !lands && !(h >= minimum) {
+            if !lands && (h.is_nan() || h < minimum) {
                 return Err(IntegratorError::StepSizeUnderflow {
                     t,
                     step: h,
@@ -181,7 +181,7 @@ impl<M: EmbeddedPair> Adaptive<M> {
             }
             self.stats.rejected += 1;
             h = taken * decision.factor;
-            if lands && !(h >= minimum) {
+            if lands && (h.is_nan() || h < minimum) {
                 return Err(IntegratorError::StepSizeUnderflow {
                     t,
                     step: h,

@@ -9,7 +9,13 @@
 //!   `(d^L exp_Θ)⁻¹` that matter to order 4 collected as by Munthe-Kaas and Owren: two a step) on
 //!   any Lie group, g ∈ G to round-off; energy and Casimirs drift as with RK4.
 //!
-//! Both implement [`crate::Integrator`], so any driver runs them next to
+//! - [`QuaternionDopri5`] and [`QuaternionDop853`]: the embedded Dormand–Prince 5(4) and DOP853
+//!   pairs on (q, Π) with the quaternion renormalized, what a scipy user would run with
+//!   `solve_ivp(method="RK45" | "DOP853", rtol, atol)`; they are [`crate::adaptive::EmbeddedPair`]s
+//!   run to a tolerance by [`crate::adaptive::Adaptive`] (`benches/adaptive.rs` measures them
+//!   against `ode_solvers`' `Dopri5` and `Dop853` on the same right-hand side).
+//!
+//! All implement [`crate::Integrator`], so any driver runs them next to
 //! [`crate::LiePoisson`] and [`crate::EulerPoincare`]. Measured (`tests/baselines.rs`): order 4 for
 //! both on the free rigid body and the heavy top, and for `Rkmk4` on SE(3).
 

@@ -23,6 +23,7 @@ use crate::adaptive::{
 use crate::carried_state;
 use crate::checks::check_state;
 use crate::system::force;
+use crate::unroll::unroll;
 use crate::{Integrator, IntegratorError, MethodInfo, System};
 use core::cell::OnceCell;
 use core::marker::PhantomData;
@@ -150,63 +151,70 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
         let mut ks = [Vector3::<f64>::zeros(); N];
         (ls[0], ks[0]) = first;
         let mut last = None;
-        for i in 1..N {
-            let mut dq = Vector4::<f64>::zeros();
-            let mut dpi = Vector3::<f64>::zeros();
-            for j in 0..i {
-                let a = P::A[i][j];
-                if a != 0.0 {
-                    dq += ls[j].coords * a;
-                    dpi += ks[j] * a;
+        // Written out stage by stage (crate::unroll): the aᵢⱼ are literals, the zero ones gone.
+        unroll!(I < N => {
+            if I > 0 {
+                let mut dq = Vector4::<f64>::zeros();
+                let mut dpi = Vector3::<f64>::zeros();
+                unroll!(J < I => {
+                    let a = P::A[I][J];
+                    if a != 0.0 {
+                        dq += ls[J].coords * a;
+                        dpi += ks[J] * a;
+                    }
+                });
+                let q_i = q.map(|q| Quaternion::from(q.coords + dq * h));
+                let pi_i = pi + dpi * h;
+                let (l, k) = self.rates(v, self.t + P::C[I] * h, q_i.as_ref(), &pi_i);
+                if P::FSAL && I == N - 1 && *b == P::B {
+                    last = Some((l, k));
                 }
+                ls[I] = l;
+                ks[I] = k;
             }
-            let q_i = q.map(|q| Quaternion::from(q.coords + dq * h));
-            let pi_i = pi + dpi * h;
-            let (l, k) = self.rates(v, self.t + P::C[i] * h, q_i.as_ref(), &pi_i);
-            if P::FSAL && i == N - 1 && *b == P::B {
-                last = Some((l, k));
-            }
-            ls[i] = l;
-            ks[i] = k;
-        }
+        });
         let mut dq = Vector4::<f64>::zeros();
         let mut dpi = Vector3::<f64>::zeros();
         let mut eq = Vector4::<f64>::zeros();
         let mut epi = Vector3::<f64>::zeros();
         let mut lq = Vector4::<f64>::zeros();
         let mut lpi = Vector3::<f64>::zeros();
-        for i in 0..N {
-            if b[i] != 0.0 {
-                dq += ls[i].coords * b[i];
-                dpi += ks[i] * b[i];
+        unroll!(I < N => {
+            if b[I] != 0.0 {
+                dq += ls[I].coords * b[I];
+                dpi += ks[I] * b[I];
             }
             if tolerance.is_some() {
-                if P::E[i] != 0.0 {
-                    eq += ls[i].coords * P::E[i];
-                    epi += ks[i] * P::E[i];
+                if P::E[I] != 0.0 {
+                    eq += ls[I].coords * P::E[I];
+                    epi += ks[I] * P::E[I];
                 }
                 if let Some(e_low) = P::E_LOW {
-                    if e_low[i] != 0.0 {
-                        lq += ls[i].coords * e_low[i];
-                        lpi += ks[i] * e_low[i];
+                    if e_low[I] != 0.0 {
+                        lq += ls[I].coords * e_low[I];
+                        lpi += ks[I] * e_low[I];
                     }
                 }
             }
-        }
+        });
         let q1 = q.map(|q| Quaternion::from(q.coords + dq * h));
         let pi1 = pi + dpi * h;
         let (mut sum, mut sum_low, mut n) = (0.0, 0.0, 3);
         if let Some(tol) = tolerance {
             for i in 0..3 {
-                let s = tol.scale(pi[i], pi1[i]);
-                sum += (h * epi[i] / s).powi(2);
-                sum_low += (h * lpi[i] / s).powi(2);
+                let w = h / tol.scale(pi[i], pi1[i]);
+                sum += (epi[i] * w).powi(2);
+                if P::E_LOW.is_some() {
+                    sum_low += (lpi[i] * w).powi(2);
+                }
             }
             if let (Some(q), Some(q1)) = (q, q1) {
                 for i in 0..4 {
-                    let s = tol.scale(q.coords[i], q1.coords[i]);
-                    sum += (h * eq[i] / s).powi(2);
-                    sum_low += (h * lq[i] / s).powi(2);
+                    let w = h / tol.scale(q.coords[i], q1.coords[i]);
+                    sum += (eq[i] * w).powi(2);
+                    if P::E_LOW.is_some() {
+                        sum_low += (lq[i] * w).powi(2);
+                    }
                 }
                 n += 4;
             }
