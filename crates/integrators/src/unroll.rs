@@ -8,10 +8,13 @@
 //! the step a hand-written implementation would be.
 
 /// `unroll!(I < N => { body })`: `body` for I = 0, 1, …, 15 (a `const I: usize` each) while
-/// `I < N`; N must be ≤ 16.
+/// `I < N`; `unroll!(I in 1..N => { body })` from I = 1. N must be ≤ 16.
 macro_rules! unroll {
     ($i:ident < $n:expr => $body:block) => {
         $crate::unroll::unroll!(@ $i < $n => $body; 0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15)
+    };
+    ($i:ident in 1..$n:expr => $body:block) => {
+        $crate::unroll::unroll!(@ $i < $n => $body; 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15)
     };
     (@ $i:ident < $n:expr => $body:block; $($k:literal)*) => {
         $(

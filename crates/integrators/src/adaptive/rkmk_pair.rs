@@ -257,36 +257,34 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
         let threshold = tolerance.map(|tol| 1e-3 * (tol.atol + tol.rtol) / h.abs());
         let mut series_converged = true;
         // Written out stage by stage (crate::unroll): the aᵢⱼ are literals, the zero ones gone.
-        unroll!(I < N => {
-            if I > 0 {
-                let mut theta = G::Algebra::zeros(n);
-                let mut dmu = G::Algebra::zeros(n);
-                unroll!(J < I => {
-                    let a = P::A[I][J];
-                    if a != 0.0 {
-                        theta = theta.axpy(a, &ks[J]);
-                        dmu = dmu.axpy(a, &ls[J]);
-                    }
-                });
-                let theta = theta.scale(h);
-                let mu_i = mu.axpy(h, &dmu);
-                let g_i = match gk {
-                    Some(gk) if needs_g => Some(G::exp_compose(gk, &theta)),
-                    _ => None,
-                };
-                let (xi, l) = self.rates(v, self.t + P::C[I] * h, g_i.as_ref(), &mu_i);
-                if P::FSAL && I == N - 1 && *b == P::B {
-                    last = Some((xi.clone(), l.clone()));
+        unroll!(I in 1..N => {
+            let mut theta = G::Algebra::zeros(n);
+            let mut dmu = G::Algebra::zeros(n);
+            unroll!(J < I => {
+                let a = P::A[I][J];
+                if a != 0.0 {
+                    theta = theta.axpy(a, &ks[J]);
+                    dmu = dmu.axpy(a, &ls[J]);
                 }
-                ks[I] = if gk.is_some() {
-                    let (k, converged) = Self::dexp_inv(&theta, &xi, threshold);
-                    series_converged &= converged;
-                    k
-                } else {
-                    xi
-                };
-                ls[I] = l;
+            });
+            let theta = theta.scale(h);
+            let mu_i = mu.axpy(h, &dmu);
+            let g_i = match gk {
+                Some(gk) if needs_g => Some(G::exp_compose(gk, &theta)),
+                _ => None,
+            };
+            let (xi, l) = self.rates(v, self.t + P::C[I] * h, g_i.as_ref(), &mu_i);
+            if P::FSAL && I == N - 1 && *b == P::B {
+                last = Some((xi.clone(), l.clone()));
             }
+            ks[I] = if gk.is_some() {
+                let (k, converged) = Self::dexp_inv(&theta, &xi, threshold);
+                series_converged &= converged;
+                k
+            } else {
+                xi
+            };
+            ls[I] = l;
         });
         // The solution and the estimates: Σ bᵢKᵢ, Σ eᵢKᵢ, … (zero weights skipped).
         let mut theta = G::Algebra::zeros(n);

@@ -12,6 +12,10 @@
 //! solution and through 4 for its embedded one, through order 8 for DOP853 with its 5th- and
 //! 3rd-order estimators through 5 and 3, and cᵢ = Σⱼ aᵢⱼ.
 
+// The coefficients are written digit for digit as published (30 digits), so that they can be
+// compared with the source; the compiler rounds them to f64.
+#![allow(clippy::excessive_precision)]
+
 use super::Controller;
 
 /// The Butcher tableau of an embedded explicit pair with `N` stages (strictly lower triangular A).

@@ -152,26 +152,24 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
         (ls[0], ks[0]) = first;
         let mut last = None;
         // Written out stage by stage (crate::unroll): the aᵢⱼ are literals, the zero ones gone.
-        unroll!(I < N => {
-            if I > 0 {
-                let mut dq = Vector4::<f64>::zeros();
-                let mut dpi = Vector3::<f64>::zeros();
-                unroll!(J < I => {
-                    let a = P::A[I][J];
-                    if a != 0.0 {
-                        dq += ls[J].coords * a;
-                        dpi += ks[J] * a;
-                    }
-                });
-                let q_i = q.map(|q| Quaternion::from(q.coords + dq * h));
-                let pi_i = pi + dpi * h;
-                let (l, k) = self.rates(v, self.t + P::C[I] * h, q_i.as_ref(), &pi_i);
-                if P::FSAL && I == N - 1 && *b == P::B {
-                    last = Some((l, k));
+        unroll!(I in 1..N => {
+            let mut dq = Vector4::<f64>::zeros();
+            let mut dpi = Vector3::<f64>::zeros();
+            unroll!(J < I => {
+                let a = P::A[I][J];
+                if a != 0.0 {
+                    dq += ls[J].coords * a;
+                    dpi += ks[J] * a;
                 }
-                ls[I] = l;
-                ks[I] = k;
+            });
+            let q_i = q.map(|q| Quaternion::from(q.coords + dq * h));
+            let pi_i = pi + dpi * h;
+            let (l, k) = self.rates(v, self.t + P::C[I] * h, q_i.as_ref(), &pi_i);
+            if P::FSAL && I == N - 1 && *b == P::B {
+                last = Some((l, k));
             }
+            ls[I] = l;
+            ks[I] = k;
         });
         let mut dq = Vector4::<f64>::zeros();
         let mut dpi = Vector3::<f64>::zeros();

@@ -31,11 +31,11 @@ fn trees(max_order: usize) -> Vec<Tree> {
                 found.push(children);
                 continue;
             }
-            for i in start..existing {
-                if all[i].order <= remaining {
+            for (i, tree) in all.iter().enumerate().take(existing).skip(start) {
+                if tree.order <= remaining {
                     let mut c = children.clone();
                     c.push(i);
-                    stack.push((i, remaining - all[i].order, c));
+                    stack.push((i, remaining - tree.order, c));
                 }
             }
         }
@@ -104,8 +104,8 @@ fn row_sums_are_nodes<const N: usize>(label: &str, a: &[[f64; N]; N], c: &[f64; 
             "{label}: Σⱼ a{i}ⱼ = {s} ≠ c{i} = {}",
             c[i]
         );
-        for j in i..N {
-            assert_eq!(a[i][j], 0.0, "{label}: a{i}{j} on or above the diagonal");
+        for (j, &aij) in a[i].iter().enumerate().skip(i) {
+            assert_eq!(aij, 0.0, "{label}: a{i}{j} on or above the diagonal");
         }
     }
 }
