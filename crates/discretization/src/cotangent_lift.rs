@@ -17,9 +17,63 @@
 //! decide it: negating every momentum is anti-symplectic on both factors, so both signs give
 //! symplectic maps; only one is consistent.)
 
-use crate::{DiscretizationError, DiscretizationMap};
+use crate::{Discretization, DiscretizationError, DiscretizationMap};
 use lie_groups::{LieGroup, Operator, Tau, Vector};
 use trivial_bundles::prelude::*;
+
+/// The trivialized cotangent map `T*R̃_d` of a map with factors a, b (the transpose of
+/// [`crate::tangent_map`]): covectors `(μ₁, μ₂)` at `R̃_d(g, ξ) = (g a(ξ), g b(ξ))` pulled back to
+/// the covector `(g, ξ, p, q)` of T*(G ⋉ 𝔤):
+///
+/// `q = d^{L*}a_ξ μ₁ + d^{L*}b_ξ μ₂`,  `p = Ad*_{a(ξ)⁻¹} μ₁ + Ad*_{b(ξ)⁻¹} μ₂ + ad*_ξ q`.
+///
+/// Each `Ad*_{a⁻¹} μ₁` is the covector μ₁ at a carried back to e, the fibre of the product
+/// `(a, μ₁)·(a⁻¹, 0)` of T*G; `ad*_ξ q` is the trivialization of T*(G ⋉ 𝔤) (the pairing with
+/// `δξ = ξ̃ + [ξ, ξ̄]`).
+pub fn cotangent_map<G: LieGroup, M: Discretization<G> + ?Sized>(
+    map: &M,
+    x: &TangentBundle<G>,
+    mu1: &G::Algebra,
+    mu2: &G::Algebra,
+) -> Tstg<G> {
+    let xi = x.fiber();
+    let zero = G::Algebra::zeros(G::dim());
+    let carried_back = |factor: G, mu: &G::Algebra| {
+        let inverse = factor.inverse();
+        CotangentBundle::from_parts(factor, mu.clone())
+            .compose(&CotangentBundle::from_parts(inverse, zero.clone()))
+            .into_parts()
+            .1
+    };
+    let q = map
+        .first_factor_tangent(xi)
+        .apply_transpose(mu1)
+        .add(&map.second_factor_tangent(xi).apply_transpose(mu2));
+    let p_hat =
+        carried_back(map.first_factor(xi), mu1).add(&carried_back(map.second_factor(xi), mu2));
+    let p = p_hat.add(&G::ad_dual_apply(xi, &q));
+    Tstg::new(x.base().clone(), xi.clone(), p, q)
+}
+
+/// `(R̃_d^{T*})⁻¹ = α̃⁻¹ ∘ T*R̃_d ∘ Φ̃⁻¹` (eq. 17) where the base `(ḡ, η) = R̃_d⁻¹(g_k, g_{k+1})` is
+/// already known (as in an integrator's step, whose unknown is η): the points
+/// `(g_k, g_{k+1}) = R̃_d(ḡ, η)` with the momenta `(μ_k, μ_{k+1})` are twisted by Φ̃ (an
+/// involution, `(μ₁, μ₂) = (−μ_k, μ_{k+1})`), pulled back by [`cotangent_map`] and flipped by α̃⁻¹:
+///
+/// `(ḡ, μ̄, η, ν)` with `μ̄ = −d^{L*}a_η μ_k + d^{L*}b_η μ_{k+1}`,
+/// `ν = Ad*_{b(η)⁻¹} μ_{k+1} − Ad*_{a(η)⁻¹} μ_k`.
+pub fn cotangent_lift_inverse_at<G: LieGroup, M: Discretization<G> + ?Sized>(
+    map: &M,
+    base: &TangentBundle<G>,
+    mu_k: &G::Algebra,
+    mu_next: &G::Algebra,
+) -> Ttsg<G> {
+    let (g, eta) = (base.base(), base.fiber());
+    let k = CotangentBundle::from_parts(g.compose(&map.first_factor(eta)), mu_k.clone());
+    let k1 = CotangentBundle::from_parts(g.compose(&map.second_factor(eta)), mu_next.clone());
+    let (first, second) = phi(&k, &k1);
+    alpha_inv(&cotangent_map(map, base, first.fiber(), second.fiber()))
+}
 
 /// The twist `Φ̃(g₁, μ₁; g₂, μ₂) = ((g₁, −μ₁), (g₂, μ₂))` between T*(G × G) and T*G × T*G (an
 /// involution). It negates the covector of the first factor, as in the discrete Legendre
@@ -41,7 +95,7 @@ impl<T> DiscretizationMap<T> {
     /// `b = −θ d^{L*}τ_{−θξ} μ₁ + (1−θ) d^{L*}τ_{(1−θ)ξ} μ₂`,
     /// `a = Ad*_{τ(θξ)} μ₁ + Ad*_{τ(−(1−θ)ξ)} μ₂ + ad*_ξ b`,
     ///
-    /// returned as the point `(g, ξ, a, b)` of T*TG.
+    /// returned as the point `(g, ξ, a, b)` of T*TG ([`cotangent_map`] of the θ-map).
     pub fn cotangent_map<G: LieGroup>(
         &self,
         x: &TangentBundle<G>,
@@ -51,18 +105,7 @@ impl<T> DiscretizationMap<T> {
     where
         T: Tau<G>,
     {
-        let theta = self.theta();
-        let xi = x.fiber();
-        let (a, b) = (xi.scale(-theta), xi.scale(1.0 - theta));
-        let q = T::dtau_left_dual_apply(&a, mu1)
-            .scale(-theta)
-            .add(&T::dtau_left_dual_apply(&b, mu2).scale(1.0 - theta));
-        let p_hat = T::tau(&a)
-            .inverse()
-            .coadjoint_apply(mu1)
-            .add(&T::tau(&b).inverse().coadjoint_apply(mu2));
-        let p = p_hat.add(&G::ad_dual_apply(xi, &q));
-        Tstg::new(x.base().clone(), xi.clone(), p, q)
+        cotangent_map(self, x, mu1, mu2)
     }
 
     /// `T*R̃_d⁻¹ = (T*R̃_d)⁻¹`: the covector `(g, ξ, a, b)` of T*(G ⋉ 𝔤) pushed to T*(G × G). With
@@ -131,12 +174,11 @@ impl<T> DiscretizationMap<T> {
         T: Tau<G>,
     {
         let (g, xi) = self.inverse(k.base(), k1.base())?;
-        let (first, second) = phi(k, k1);
-        let y = self.cotangent_map(
+        Ok(cotangent_lift_inverse_at(
+            self,
             &TangentBundle::from_parts(g, xi),
-            first.fiber(),
-            second.fiber(),
-        );
-        Ok(alpha_inv(&y))
+            k.fiber(),
+            k1.fiber(),
+        ))
     }
 }

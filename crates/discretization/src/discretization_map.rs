@@ -1,8 +1,17 @@
 //! Trivialized discretization maps (§3.2): `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))` and their inverses.
 
-use crate::DiscretizationError;
+use crate::equivariant_map::probe_reversible_increment;
+use crate::{Discretization, DiscretizationError};
 use core::marker::PhantomData;
 use lie_groups::{LieGroup, Operator, Tau, Vector};
+
+/// A family of discretization maps with one parameter θ ∈ [0, 1] — the paper's
+/// `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))` on either side — so that integrators can be built from
+/// θ alone (`integrators::LiePoisson::new(system, θ, μ₀, g₀)`).
+pub trait ThetaFamily: Sized {
+    /// The map with parameter θ (an error unless θ ∈ [0, 1]).
+    fn with_theta(theta: f64) -> Result<Self, DiscretizationError>;
+}
 
 /// Stopping rule of the Newton solve used by [`DiscretizationMap::inverse`] when no closed form
 /// exists (τ other than exp and 0 < θ < 1, θ ≠ ½).
@@ -242,5 +251,98 @@ impl<T> DiscretizationMap<T> {
         } else {
             Err(singular())
         }
+    }
+}
+
+impl<T> ThetaFamily for DiscretizationMap<T> {
+    fn with_theta(theta: f64) -> Result<Self, DiscretizationError> {
+        Self::new(theta)
+    }
+}
+
+/// The θ-map as a [`Discretization`]: `a(ξ) = τ(−θξ)`, `b(ξ) = τ((1−θ)ξ)`, with the closed-form
+/// tangents of τ and its descriptors exactly.
+impl<G: LieGroup, T: Tau<G>> Discretization<G> for DiscretizationMap<T> {
+    /// `a(ξ) = τ(−θξ)`.
+    fn first_factor(&self, xi: &G::Algebra) -> G {
+        T::tau(&xi.scale(-self.theta))
+    }
+    /// `b(ξ) = τ((1−θ)ξ)`.
+    fn second_factor(&self, xi: &G::Algebra) -> G {
+        T::tau(&xi.scale(1.0 - self.theta))
+    }
+    /// `d^L a_ξ = −θ d^Lτ_{−θξ}`.
+    fn first_factor_tangent(&self, xi: &G::Algebra) -> G::Operator {
+        T::dtau_left(&xi.scale(-self.theta)).scale(-self.theta)
+    }
+    /// `d^L b_ξ = (1−θ) d^Lτ_{(1−θ)ξ}`.
+    fn second_factor_tangent(&self, xi: &G::Algebra) -> G::Operator {
+        let b = 1.0 - self.theta;
+        T::dtau_left(&xi.scale(b)).scale(b)
+    }
+    fn label(&self) -> String {
+        format!("tau={}", T::NAME)
+    }
+    #[inline]
+    fn theta(&self) -> f64 {
+        self.theta
+    }
+    /// The adjoint of θ is 1 − θ: symmetric iff θ = ½.
+    fn symmetric(&self) -> bool {
+        self.theta == 0.5
+    }
+    /// `log(b(−ξ)⁻¹ a(ξ)) = log(τ((1−θ)ξ) τ(−θξ)) = (1 − 2θ) ξ + O(|ξ|³)` (τ(ξ)τ(−ξ) = e makes
+    /// log τ odd, and brackets of parallel vectors vanish): order 2 iff θ = ½.
+    fn order(&self) -> u32 {
+        if self.theta == 0.5 {
+            2
+        } else {
+            1
+        }
+    }
+    /// `c(ξ) = τ(θξ) τ((1−θ)ξ)`: `τ(ξ)` at θ ∈ {0, 1}, `τ(ξ/2)²` at θ = ½ and `exp(ξ)` for exp —
+    /// reversible at once; otherwise reversible where the two factors commute (Cayley: both are
+    /// rational functions of ξ̂), which is measured ([`crate::probe_reversible_increment`]).
+    fn reversible_increment(&self) -> bool {
+        let th = self.theta;
+        th == 0.0
+            || th == 0.5
+            || th == 1.0
+            || T::ONE_PARAMETER_SUBGROUP
+            || probe_reversible_increment::<G, Self>(self)
+    }
+    /// `τ(ξ) τ(−ξ) = e` makes log τ odd, `τ(ξ) = exp(ξ + O(|ξ|³))`, so by BCH (the brackets of
+    /// parallel vectors vanish) `c(ξ) = exp(ξ + O(|ξ|³))`: 2 for every θ.
+    fn increment_order(&self) -> u32 {
+        2
+    }
+    /// `a ≡ e` iff θ = 0.
+    #[inline]
+    fn base_is_first_point(&self) -> bool {
+        self.theta == 0.0
+    }
+    /// `τ⁻¹(τ(η)) = η` to `1e-8 (1 + ‖η‖)`; skipped inside `Tau::INVERTIBLE_RADIUS` (compared
+    /// squared: no square root on the step's path).
+    #[inline]
+    fn check_domain(&self, eta: &G::Algebra) -> Result<(), DiscretizationError> {
+        if eta.dot(eta) <= T::INVERTIBLE_RADIUS * T::INVERTIBLE_RADIUS {
+            Ok(())
+        } else {
+            tau_round_trip::<G, T>(eta)
+        }
+    }
+}
+
+#[cold]
+fn tau_round_trip<G: LieGroup, T: Tau<G>>(eta: &G::Algebra) -> Result<(), DiscretizationError> {
+    let outside = || DiscretizationError::OutsideTauDomain {
+        tau: T::NAME,
+        xi_norm: eta.norm(),
+    };
+    let back = T::tau_inv(&T::tau(eta)).map_err(|_| outside())?;
+    if back.sub(eta).norm_max() <= 1e-8 * (1.0 + eta.norm_max()) {
+        Ok(())
+    } else {
+        Err(outside())
     }
 }

@@ -82,19 +82,30 @@
 
 #![warn(missing_docs)]
 
+mod adjoint;
+mod composed;
 mod cotangent_lift;
 mod discretization_map;
+mod equivariant_map;
 mod error;
+mod finite_differences;
 mod lifted_map;
 mod retraction;
 mod right_discretization_map;
 mod tangent_lift;
 mod vector_space;
 
-pub use cotangent_lift::phi;
-pub use discretization_map::{DiscretizationMap, InverseMethod, NewtonOptions};
+pub use adjoint::Adjoint;
+pub use composed::Composed;
+pub use cotangent_lift::{cotangent_lift_inverse_at, cotangent_map, phi};
+pub use discretization_map::{DiscretizationMap, InverseMethod, NewtonOptions, ThetaFamily};
+pub use equivariant_map::{
+    probe_increment_order, probe_order, probe_reversible_increment, probe_symmetric,
+    Discretization, Side,
+};
 pub use error::DiscretizationError;
-pub use lifted_map::{LiftedMap, MomentumUpdate, Side};
+pub use lifted_map::{LiftedMap, MomentumUpdate};
 pub use retraction::Retraction;
 pub use right_discretization_map::RightDiscretizationMap;
+pub use tangent_lift::{tangent_lift, tangent_map};
 pub use vector_space::{Point, TangentPoint, VectorSpaceDiscretization};

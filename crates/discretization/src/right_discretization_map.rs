@@ -12,7 +12,10 @@
 //! and the integrators against an independent integration of the right equations
 //! `μ̇ = −ad*_ξ μ`, `ġ = ξ g` (crates/integrators/tests/right_trivialized.rs).
 
-use crate::{DiscretizationError, DiscretizationMap, LiftedMap, MomentumUpdate, Side};
+use crate::{
+    Discretization, DiscretizationError, DiscretizationMap, LiftedMap, MomentumUpdate, Side,
+    ThetaFamily,
+};
 use lie_groups::{LieGroup, Tau, Vector};
 
 /// `R̃_d^R(g, ξ) = (τ(−θξ) g, τ((1−θ)ξ) g)`.
@@ -57,14 +60,27 @@ impl<T> RightDiscretizationMap<T> {
     }
 }
 
-/// The components of the right-trivialized lifts: the left ones at −η, points multiplied on the
-/// left (see the module page).
-impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for RightDiscretizationMap<T> {
+impl<T> ThetaFamily for RightDiscretizationMap<T> {
     fn with_theta(theta: f64) -> Result<Self, DiscretizationError> {
         Self::new(theta)
     }
-    fn theta(&self) -> f64 {
-        self.left.theta()
+}
+
+/// The θ-map's factors used on the right: `R̃_d^R(g, ξ) = (a(−ξ)⁻¹ g, b(−ξ)⁻¹ g)` with
+/// `a(−ξ)⁻¹ = τ(−θξ)`, `b(−ξ)⁻¹ = τ((1−θ)ξ)`; every descriptor is the left map's (ι preserves
+/// them).
+impl<G: LieGroup, T: Tau<G>> Discretization<G> for RightDiscretizationMap<T> {
+    fn first_factor(&self, xi: &G::Algebra) -> G {
+        self.left.first_factor(xi)
+    }
+    fn second_factor(&self, xi: &G::Algebra) -> G {
+        self.left.second_factor(xi)
+    }
+    fn first_factor_tangent(&self, xi: &G::Algebra) -> G::Operator {
+        Discretization::<G>::first_factor_tangent(&self.left, xi)
+    }
+    fn second_factor_tangent(&self, xi: &G::Algebra) -> G::Operator {
+        Discretization::<G>::second_factor_tangent(&self.left, xi)
     }
     fn label(&self) -> String {
         format!("tau={}, right", T::NAME)
@@ -72,6 +88,33 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for RightDiscretizationMap<T> {
     fn side(&self) -> Side {
         Side::Right
     }
+    fn theta(&self) -> f64 {
+        self.left.theta()
+    }
+    fn symmetric(&self) -> bool {
+        Discretization::<G>::symmetric(&self.left)
+    }
+    fn order(&self) -> u32 {
+        Discretization::<G>::order(&self.left)
+    }
+    fn reversible_increment(&self) -> bool {
+        Discretization::<G>::reversible_increment(&self.left)
+    }
+    fn increment_order(&self) -> u32 {
+        Discretization::<G>::increment_order(&self.left)
+    }
+    fn base_is_first_point(&self) -> bool {
+        Discretization::<G>::base_is_first_point(&self.left)
+    }
+    /// The left map's at −η.
+    fn check_domain(&self, eta: &G::Algebra) -> Result<(), DiscretizationError> {
+        Discretization::<G>::check_domain(&self.left, &eta.neg())
+    }
+}
+
+/// The components of the right-trivialized lifts: the left ones at −η, points multiplied on the
+/// left (see the module page).
+impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for RightDiscretizationMap<T> {
     /// `ḡ = τ(θη) g_k`.
     fn base_point(&self, gk: &G, eta: &G::Algebra) -> G {
         T::tau(&eta.scale(self.theta())).compose(gk)
@@ -84,9 +127,6 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for RightDiscretizationMap<T> {
     /// on the inverse.
     fn next_point(&self, gk: &G, eta: &G::Algebra) -> G {
         T::compose_tau_split(&gk.inverse(), self.theta(), &eta.neg()).inverse()
-    }
-    fn check_domain(&self, eta: &G::Algebra) -> Result<(), DiscretizationError> {
-        LiftedMap::<G>::check_domain(&self.left, &eta.neg())
     }
     fn momentum_update(
         &self,
@@ -113,6 +153,15 @@ impl<G: LieGroup, T: Tau<G>> LiftedMap<G> for RightDiscretizationMap<T> {
     ) -> G::Operator {
         use lie_groups::Operator;
         LiftedMap::<G>::base_momentum_derivative(&self.left, &eta.neg(), mu_k, update).scale(-1.0)
+    }
+    /// The left map's at −η (μ̄ is affine in ν whatever the sign of η).
+    fn base_momentum_impulse_derivative(&self, eta: &G::Algebra) -> Option<G::Operator> {
+        LiftedMap::<G>::base_momentum_impulse_derivative(&self.left, &eta.neg())
+    }
+    /// `ḡ = τ(θη) g_k` moves by a derivative that depends on g_k: not provided (the right maps
+    /// take no potential).
+    fn base_point_derivative(&self, _eta: &G::Algebra) -> Option<G::Operator> {
+        None
     }
     fn first_velocity(&self, eta: &G::Algebra, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
         LiftedMap::<G>::first_velocity(&self.left, &eta.neg(), xi, zeta)

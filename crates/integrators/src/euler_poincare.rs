@@ -68,7 +68,7 @@ use crate::solver::{solve, Scales};
 use crate::system::force;
 use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
-use discretization::{DiscretizationMap, LiftedMap};
+use discretization::{DiscretizationMap, LiftedMap, ThetaFamily};
 use lie_groups::{LieGroup, Operator, Vector};
 
 /// The Euler–Poincaré integrator (eq. 18) on G for the left-trivialized discretization map
@@ -119,16 +119,17 @@ pub struct TangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
 }
 
 impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> {
-    /// Builds the integrator at t = 0 from the body velocity ξ₀ and optionally g₀.
-    pub fn new(
+    /// Builds the integrator of a configured map at t = 0 from the body velocity ξ₀ and
+    /// optionally g₀: any [`LiftedMap`], a user's own included (see the crate page of
+    /// `discretization`). Errors: non-finite ξ₀ or g₀, g₀ missing for a system with a
+    /// potential, a potential or force with a right-sided map.
+    pub fn with_map(
         system: S,
-        theta: f64,
+        map: M,
         xi0: G::Algebra,
         g0: Option<G>,
     ) -> Result<Self, IntegratorError> {
-        check_theta(theta)?;
         check_state(&system, &xi0, "velocity ξ", g0.as_ref())?;
-        let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
         if map.side() == discretization::Side::Right
             && (system.has_potential() || system.is_forced())
         {
@@ -152,13 +153,32 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             warm: WarmStart::default(),
         })
     }
+    /// The integrator of the θ-map of a [`ThetaFamily`] at t = 0 from the body velocity ξ₀ and
+    /// optionally g₀, as [`Self::with_map`]. Errors: θ ∉ [0, 1], and those of
+    /// [`Self::with_map`].
+    pub fn new(
+        system: S,
+        theta: f64,
+        xi0: G::Algebra,
+        g0: Option<G>,
+    ) -> Result<Self, IntegratorError>
+    where
+        M: ThetaFamily,
+    {
+        check_theta(theta)?;
+        let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
+        Self::with_map(system, map, xi0, g0)
+    }
     /// Builds the integrator from the momentum μ₀ (ξ₀ = ∂h/∂μ(μ₀)).
     pub fn from_momentum(
         system: S,
         theta: f64,
         mu0: G::Algebra,
         g0: Option<G>,
-    ) -> Result<Self, IntegratorError> {
+    ) -> Result<Self, IntegratorError>
+    where
+        M: ThetaFamily,
+    {
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         let xi0 = system.velocity(&mu0);
         Self::new(system, theta, xi0, g0)
@@ -198,6 +218,11 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     /// The discretization map.
     pub fn map(&self) -> &M {
         &self.map
+    }
+    /// Whether the step is its own adjoint, Φ_{−h} = Φ_h⁻¹: where the map equals its adjoint
+    /// ([`discretization::Discretization::symmetric`]; θ = ½ for the θ-map).
+    pub fn is_self_adjoint(&self) -> bool {
+        self.map.symmetric()
     }
     /// Solver iterations used by the last successful step (0 for θ = 0 or before the first).
     pub fn last_iterations(&self) -> usize {
@@ -308,7 +333,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let theta = self.theta();
-        let (delta, ev, iterations, jacobians, contraction) = if theta == 0.0 {
+        let (delta, ev, iterations, jacobians, contraction) = if self.map.base_is_first_point() {
             let delta = G::Algebra::zeros(G::dim());
             let ev = self.evaluate(h, &delta);
             (delta, ev, 0, 0, Some((0.0, 0.0)))
@@ -445,18 +470,24 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
             self.theta()
         )
     }
-    /// Order 2 for θ = ½, order 1 otherwise (`tests/order.rs`); θ = 0 is explicit. A variational
-    /// integrator: symplectic in (g, ξ) through the discrete Legendre map, but μ = ∂l/∂ξ leaves its
-    /// coadjoint orbit (Casimirs are not kept).
+    /// From the map: its order ([`discretization::Discretization::order`]: 2 for θ = ½, else 1;
+    /// `tests/order.rs`, `tests/user_map.rs`) and symmetry (symmetric where the map equals its
+    /// adjoint); explicit where the base point is the first point (θ = 0). A variational
+    /// integrator: symplectic in (g, ξ) through the discrete Legendre map, but μ = ∂l/∂ξ leaves
+    /// its coadjoint orbit (Casimirs are not kept).
     fn side(&self) -> discretization::Side {
         self.map.side()
     }
     fn info(&self) -> crate::MethodInfo {
-        let symmetric = self.theta() == 0.5;
+        let symmetric = self.is_self_adjoint();
         crate::MethodInfo {
-            order: if symmetric { 2 } else { 1 },
+            order: if symmetric {
+                self.map.order().max(2)
+            } else {
+                self.map.order()
+            },
             symmetric,
-            explicit: self.theta() == 0.0,
+            explicit: self.map.base_is_first_point(),
             poisson: false,
             casimirs: false,
             momentum_map: false,

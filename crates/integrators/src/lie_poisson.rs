@@ -42,7 +42,7 @@ use crate::solver::{solve, Scales, Solution};
 use crate::system::force;
 use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
-use discretization::{DiscretizationMap, LiftedMap};
+use discretization::{DiscretizationMap, LiftedMap, ThetaFamily};
 use lie_groups::{LieGroup, Operator, Vector};
 
 /// The Lie–Poisson integrator (eq. 19) on G for the left-trivialized discretization map
@@ -99,18 +99,17 @@ pub struct CotangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
 pub const RENORMALIZE_EVERY: u32 = 1024;
 
 impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S> {
-    /// Builds the integrator at t = 0 from μ₀ and optionally g₀, with the default
-    /// [`SolverConfig`]. Errors: θ ∉ [0, 1], non-finite μ₀ or g₀, g₀ missing for a system with a
-    /// potential.
-    pub fn new(
+    /// Builds the integrator of a configured map at t = 0 from μ₀ and optionally g₀, with the
+    /// default [`SolverConfig`]: any [`LiftedMap`], a user's own included (see the crate page
+    /// of `discretization`). Errors: non-finite μ₀ or g₀, g₀ missing for a system with a
+    /// potential, a potential or force with a right-sided map.
+    pub fn with_map(
         system: S,
-        theta: f64,
+        map: M,
         mu0: G::Algebra,
         g0: Option<G>,
     ) -> Result<Self, IntegratorError> {
-        check_theta(theta)?;
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
-        let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
         if map.side() == discretization::Side::Right
             && (system.has_potential() || system.is_forced())
         {
@@ -133,6 +132,22 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             unnormalized: 0,
             warm: WarmStart::default(),
         })
+    }
+    /// The integrator of the θ-map of a [`ThetaFamily`] (the paper's
+    /// `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))`), as [`Self::with_map`]. Errors: θ ∉ [0, 1], and
+    /// those of [`Self::with_map`].
+    pub fn new(
+        system: S,
+        theta: f64,
+        mu0: G::Algebra,
+        g0: Option<G>,
+    ) -> Result<Self, IntegratorError>
+    where
+        M: ThetaFamily,
+    {
+        check_theta(theta)?;
+        let map = M::with_theta(theta).map_err(|_| IntegratorError::InvalidTheta { theta })?;
+        Self::with_map(system, map, mu0, g0)
     }
     /// Replaces the solver configuration.
     pub fn with_solver(mut self, config: SolverConfig) -> Self {
@@ -170,18 +185,19 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     pub fn map(&self) -> &M {
         &self.map
     }
-    /// Whether the step is its own adjoint, Φ_{−h} = Φ_h⁻¹. The adjoint of the θ-map
-    /// (swap the two points, ξ ↦ −ξ) is the (1−θ)-map, so θ = ½ always is; and without a
-    /// potential or force the θ = 0 and θ = 1 steps coincide (module page: μ̄ is the same by
-    /// `d^{R*}τ_ξ = d^{L*}τ_ξ Ad*_{τ(ξ)}`), so each is the other's adjoint, itself
-    /// (`tests/order.rs`: reversible to round-off, order 4 under the triple jump).
+    /// Whether the step is its own adjoint, Φ_{−h} = Φ_h⁻¹: where the map equals its adjoint
+    /// ([`discretization::Discretization::symmetric`]: the step of the adjoint map at −h undoes
+    /// this one), or, without a potential or force, where the step's increment
+    /// `c(η) = a(η)⁻¹ b(η)` is reversible
+    /// ([`discretization::Discretization::reversible_increment`]): the step then sees c alone
+    /// (`μ_{k+1} = Ad*_{c(η)} μ_k`, `μ̄ = d^{L*}c_η μ_{k+1}`) and η ↦ −η solves it backwards.
+    /// For the θ-map: θ = ½, or every θ without a potential on exp and Cayley (their factors
+    /// commute), measured reversible by `tests/user_map.rs`.
     pub fn is_self_adjoint(&self) -> bool {
-        let th = self.theta();
-        th == 0.5
-            || ((th == 0.0 || th == 1.0)
-                && self.map.side() == discretization::Side::Left
-                && !self.system.has_potential()
-                && !self.system.is_forced())
+        self.map.symmetric()
+            || (!self.system.has_potential()
+                && !self.system.is_forced()
+                && self.map.reversible_increment())
     }
     /// The solver configuration.
     pub fn solver(&self) -> &SolverConfig {
@@ -432,22 +448,29 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
     fn method_name(&self) -> String {
         format!("lie-poisson({}, theta={})", self.map.label(), self.theta())
     }
-    /// Order 2 for θ = ½, and for every θ without a potential (θ = 0 and θ = 1 then coincide);
-    /// order 1 for θ ≠ ½ with a potential or an external force (`tests/order.rs`, `tests/potential.rs`,
-    /// `tests/forces.rs`). Implicit, a
-    /// Poisson map keeping μ on its coadjoint orbit and, for an invariant system, the spatial
-    /// momentum map `Ad*_{g⁻¹} μ` (g_{k+1} = g_k τ(θξ) τ((1−θ)ξ) and μ_{k+1} the matching Ad*).
+    /// From the map and the system: with a potential or force, the map's order
+    /// ([`discretization::Discretization::order`]: 2 for θ = ½, else 1); without, the step sees
+    /// only the increment c and has at least its order
+    /// ([`discretization::Discretization::increment_order`]: 2 for every θ-map); a symmetric
+    /// step ([`Self::is_self_adjoint`]) has order at least 2 (`tests/order.rs`,
+    /// `tests/potential.rs`, `tests/forces.rs`, `tests/user_map.rs`). Implicit, a Poisson map
+    /// keeping μ on its coadjoint orbit and, for an invariant system, the spatial momentum map
+    /// `Ad*_{g⁻¹} μ` (g_{k+1} = g_k a(η)⁻¹ b(η) and μ_{k+1} the matching Ad*).
     fn side(&self) -> discretization::Side {
         self.map.side()
     }
     fn info(&self) -> crate::MethodInfo {
         let symmetric = self.is_self_adjoint();
+        let free = !(self.system.has_potential() || self.system.is_forced());
+        let mut order = self.map.order();
+        if free {
+            order = order.max(self.map.increment_order());
+        }
+        if symmetric {
+            order = order.max(2);
+        }
         crate::MethodInfo {
-            order: if symmetric || !(self.system.has_potential() || self.system.is_forced()) {
-                2
-            } else {
-                1
-            },
+            order,
             symmetric,
             explicit: false,
             poisson: true,

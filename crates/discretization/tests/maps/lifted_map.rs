@@ -4,13 +4,15 @@
 //! differences.
 
 use crate::common::fd_vector;
-use discretization::{DiscretizationError, DiscretizationMap, LiftedMap};
+use discretization::{
+    Discretization, DiscretizationError, DiscretizationMap, LiftedMap, ThetaFamily,
+};
 use lie_groups::testing::assert_small;
 use lie_groups::{LieGroup, Operator, Tau, Vector};
 use trivial_bundles::prelude::*;
 
 fn map<G: LieGroup, T: Tau<G>>(theta: f64) -> DiscretizationMap<T> {
-    <DiscretizationMap<T> as LiftedMap<G>>::with_theta(theta).expect("θ ∈ [0, 1]")
+    DiscretizationMap::<T>::with_theta(theta).expect("θ ∈ [0, 1]")
 }
 
 /// base_point, second_point, momentum_update and base_momentum are the components of
@@ -460,17 +462,17 @@ fn so3_cayley_split_compose_is_the_product_of_the_two_factors() {
 fn check_domain_refuses_steps_tau_cannot_invert() {
     use nalgebra::Vector3;
     let m = map::<So3, ExpMap>(0.5);
-    assert!(LiftedMap::<So3>::check_domain(&m, &Vector3::new(0.3, -1.0, 2.0)).is_ok());
+    assert!(Discretization::<So3>::check_domain(&m, &Vector3::new(0.3, -1.0, 2.0)).is_ok());
     let far = Vector3::new(0.0, 0.0, 3.5);
     assert!(matches!(
-        LiftedMap::<So3>::check_domain(&m, &far),
+        Discretization::<So3>::check_domain(&m, &far),
         Err(DiscretizationError::OutsideTauDomain { tau: "exp", .. })
     ));
     let nan = Vector3::new(f64::NAN, 0.0, 0.0);
-    assert!(LiftedMap::<So3>::check_domain(&m, &nan).is_err());
-    assert!(<DiscretizationMap<Cayley> as LiftedMap<So3>>::with_theta(1.5).is_err());
+    assert!(Discretization::<So3>::check_domain(&m, &nan).is_err());
+    assert!(DiscretizationMap::<Cayley>::with_theta(1.5).is_err());
     assert_eq!(
-        LiftedMap::<So3>::label(&map::<So3, Cayley>(0.0)),
+        Discretization::<So3>::label(&map::<So3, Cayley>(0.0)),
         "tau=cayley"
     );
 }

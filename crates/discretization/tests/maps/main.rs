@@ -3,6 +3,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod composed_lift;
 mod flows;
 mod lifted_map;
 mod maps;

@@ -4,7 +4,7 @@
 //! on SO(3), SE(3), SE(2) and SO(4), τ = exp and Cayley, several θ.
 
 use crate::common::fd_vector;
-use discretization::{LiftedMap, RightDiscretizationMap, Side};
+use discretization::{Discretization, LiftedMap, RightDiscretizationMap, Side, ThetaFamily};
 use lie_groups::testing::{algebra, assert_small};
 use lie_groups::{
     Cayley, DenseMatrix, ExpMap, LieGroup, Operator, Se2, Se3, So3, SoN, Tau, Vector,
@@ -12,7 +12,7 @@ use lie_groups::{
 use proptest::prelude::*;
 
 fn map<G: LieGroup, T: Tau<G>>(theta: f64) -> RightDiscretizationMap<T> {
-    <RightDiscretizationMap<T> as LiftedMap<G>>::with_theta(theta).expect("θ ∈ [0, 1]")
+    RightDiscretizationMap::<T>::with_theta(theta).expect("θ ∈ [0, 1]")
 }
 
 /// Axioms: `R̃_d^R(g, 0) = (g, g)` and `d/dt [R²(tξ) − R¹(tξ)]_{t=0} = ξ̂ g` (the right-trivialized
@@ -49,7 +49,7 @@ fn check_map<G: LieGroup, T: Tau<G>>(a: &G::Algebra, xi: &G::Algebra, theta: f64
         m.next_point(&gk, xi).matrix_distance(&gk1),
         1e-13 * s,
     );
-    assert_eq!(LiftedMap::<G>::side(&m), Side::Right);
+    assert_eq!(Discretization::<G>::side(&m), Side::Right);
 }
 
 /// For any η the step `μ_{k+1} = momentum_update(η, μ_k).next`, `g_{k+1} = next_point(g_k, η)`
