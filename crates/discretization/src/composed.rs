@@ -103,31 +103,61 @@ pub(crate) fn second_point<G: LieGroup, M: Discretization<G> + ?Sized>(
     }
 }
 
-/// `(e, μ_k)·(a(η)⁻¹, 0)·(e, ν)·(b(η), 0) = (a⁻¹b, μ_{k+1})` in T*G: μ_k carried to the base
-/// point (`transported`), kicked by ν, carried to the second point.
+/// `(Ad*_g − I) μ` for g near e, in increment form: `exp_coadjoint_increment(log g, μ)`, computed
+/// from log g and rounded relative to its own size O(|log g||μ|) (`LieGroup::exp_coadjoint_increment`)
+/// — the rounding of g's entries `1 − O(|log g|²)` does not enter. Where log g does not exist, the
+/// product with g's matrix, rounded at ε|μ|.
+fn coadjoint_increment<G: LieGroup>(
+    g: &G,
+    log: &Option<G::Algebra>,
+    mu: &G::Algebra,
+) -> G::Algebra {
+    match log {
+        Some(x) => G::exp_coadjoint_increment(x, mu),
+        None => g.coadjoint_apply(mu).sub(mu),
+    }
+}
+
+/// `(Ad_g − I) v`, the adjoint counterpart of [`coadjoint_increment`].
+fn adjoint_increment<G: LieGroup>(g: &G, v: &G::Algebra) -> G::Algebra {
+    match finite_log(g) {
+        Some(x) => G::exp_adjoint_increment(&x, v),
+        None => g.adjoint_apply(v).sub(v),
+    }
+}
+
+fn finite_log<G: LieGroup>(g: &G) -> Option<G::Algebra> {
+    g.log().ok().filter(Vector::is_finite)
+}
+
+/// The product `(e, μ_k)·(a(η)⁻¹, 0)·(e, ν)·(b(η), 0) = (a⁻¹b, μ_{k+1})` of T*G
+/// (`(g, μ)(h, ν) = (gh, Ad*_h μ + ν)`): μ_k carried to the base point (`transported`), kicked by
+/// ν, carried to the second point — evaluated in increment form, as the θ-map's: with
+/// `δ_g = Ad*_g − I` ([`coadjoint_increment`]), `Δ = δ_{a⁻¹}(μ_k) + ν` and
+/// `μ_{k+1} − μ_k = Δ + δ_b(μ_k) + δ_b(Δ)`, so μ_k enters once and |μ|² follows the rounding of
+/// the increments, not of a(η)'s and b(η)'s entries.
 fn left_momentum_update<G: LieGroup, M: Discretization<G> + ?Sized>(
     map: &M,
     eta: &G::Algebra,
     mu_k: &G::Algebra,
     nu: Option<&G::Algebra>,
 ) -> MomentumUpdate<G::Algebra> {
-    let zero = G::Algebra::zeros(G::dim());
-    let start = CotangentBundle::from_parts(G::identity(), mu_k.clone());
-    let at_base = start.compose(&CotangentBundle::from_parts(
-        map.first_factor(eta).inverse(),
-        zero.clone(),
-    ));
-    let transported = at_base.fiber().clone();
-    let kicked = match nu {
-        Some(nu) => at_base.compose(&CotangentBundle::from_parts(G::identity(), nu.clone())),
-        None => at_base,
+    let a_inv = map.first_factor(eta).inverse();
+    let b = map.second_factor(eta);
+    let carried = coadjoint_increment(&a_inv, &finite_log(&a_inv), mu_k);
+    let transported = mu_k.add(&carried);
+    let kick = match nu {
+        Some(nu) => carried.add(nu),
+        None => carried,
     };
-    let end = kicked.compose(&CotangentBundle::from_parts(map.second_factor(eta), zero));
-    let next = end.fiber().clone();
+    let log_b = finite_log(&b);
+    let increment = kick
+        .add(&coadjoint_increment(&b, &log_b, mu_k))
+        .add(&coadjoint_increment(&b, &log_b, &kick));
     MomentumUpdate {
         transported,
-        increment: next.sub(mu_k),
-        next,
+        next: mu_k.add(&increment),
+        increment,
     }
 }
 
@@ -265,10 +295,41 @@ pub(crate) fn first_velocity_derivative<G: LieGroup, M: Discretization<G> + ?Siz
     xi: &G::Algebra,
     zeta: &G::Algebra,
 ) -> (G::Operator, G::Operator) {
-    let h = match map.side() {
-        Side::Left => h,
-        Side::Right => -h,
-    };
+    let h = left_h(map, h);
     let a = jacobian::<G>(|x| left_velocities(map, &x.scale(h), x, zeta).0, xi);
     (a, map.first_factor_tangent(&xi.scale(h)))
+}
+
+/// `ξ_k − ξ = (Ad_{a(hξ)⁻¹} − I) ξ + d^L a_{hξ} ζ` (the first velocity of `R̃_d^T(e, ξ, hξ, ζ)`
+/// less ξ), the Ad term in increment form ([`adjoint_increment`]): rounded relative to
+/// O(h|ξ|² + |ζ|), not to |ξ|. On the right: the left map's at −h.
+pub(crate) fn first_velocity_increment<G: LieGroup, M: Discretization<G> + ?Sized>(
+    map: &M,
+    h: f64,
+    xi: &G::Algebra,
+    zeta: &G::Algebra,
+) -> G::Algebra {
+    let eta = xi.scale(left_h(map, h));
+    adjoint_increment(&map.first_factor(&eta).inverse(), xi)
+        .add(&map.first_factor_tangent(&eta).apply(zeta))
+}
+
+/// `ξ_{k+1} − ξ = (Ad_{b(hξ)⁻¹} − I) ξ + d^L b_{hξ} ζ`, as [`first_velocity_increment`].
+pub(crate) fn second_velocity_increment<G: LieGroup, M: Discretization<G> + ?Sized>(
+    map: &M,
+    h: f64,
+    xi: &G::Algebra,
+    zeta: &G::Algebra,
+) -> G::Algebra {
+    let eta = xi.scale(left_h(map, h));
+    adjoint_increment(&map.second_factor(&eta).inverse(), xi)
+        .add(&map.second_factor_tangent(&eta).apply(zeta))
+}
+
+/// h for the left map: h itself on the left, −h on the right.
+fn left_h<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M, h: f64) -> f64 {
+    match map.side() {
+        Side::Left => h,
+        Side::Right => -h,
+    }
 }

@@ -19,7 +19,7 @@
 //!   from Φ̃, `μ̄ = d^{L*}a_η μ₁ + d^{L*}b_η μ₂ = −d^{L*}a_η μ_k + d^{L*}b_η μ_{k+1}`;
 //! - the momentum update solves that lift's ν-component `ν = Ad*_{b⁻¹} μ_{k+1} − Ad*_{a⁻¹} μ_k`
 //!   for μ_{k+1}: in T*G it is the product `(g_k, μ_k)·(a(η)⁻¹, ν)·(b(η), 0) = (g_{k+1}, μ_{k+1})`
-//!   (`(g, μ)(h, ν) = (gh, Ad*_h μ + ν)`), which also carries g_k to g_{k+1};
+//!   (`(g, μ)(h, ν) = (gh, Ad*_h μ + ν)`), evaluated in increment form (below);
 //! - the points are `ḡ = g_k a(η)⁻¹` and `g_{k+1} = ḡ b(η)`;
 //! - the Newton derivatives: `∂μ̄/∂ν = (Ad_b d^L b_η)ᵀ` and `ḡ⁻¹∂ḡ/∂η = −Ad_a d^L a_η` in closed
 //!   form; `∂μ̄/∂η` and `∂ξ_k/∂ξ` by five-point differences of the composed components
@@ -30,14 +30,15 @@
 //! carries it onto the left map at −η (see [`crate::RightDiscretizationMap`]): the left components
 //! at −η, points multiplied on the left.
 //!
-//! Precision of the default path. The momentum update forms `Ad*` from the matrices of a(η) and
-//! b(η): μ_{k+1} stays on the coadjoint orbit of μ_k exactly in exact arithmetic, and in floating
-//! point its Casimirs move by the rounding of those matrices, a random walk of O(ε) per step with
-//! no drift of the η-solve's error into it; the increment `μ_{k+1} − μ_k` is rounded at ε|μ| (the
-//! integrators still add it with compensated summation). The fused θ-forms compute the increment
-//! from η directly, rounded relative to its own size O(|η||μ|). Likewise the velocity increments
-//! of the default path are whole velocities less ξ, rounded at ε|ξ|, where the θ-forms round at
-//! ε(h|ξ|² + |ζ|). Both forms keep the Casimir at round-off (`tests/user_map.rs`).
+//! Precision of the default path. The momentum update and the velocity increments are evaluated in
+//! increment form, as the fused θ-forms are: `(Ad*_g − I) μ` and `(Ad_g − I) ξ` for the factors g
+//! come from `log g` (`LieGroup::exp_coadjoint_increment`, `exp_adjoint_increment`), rounded
+//! relative to their own size, not from g's matrix entries `1 − O(|η|²)`; the integrators add
+//! them with compensated summation. So the Casimir |Π|² stays at round-off on the default path
+//! too (3.3e-16 relative over 10⁴ steps against 2.2e-16 fused; with Ad* from the matrices it
+//! random-walked to 1.4–3.5e-14; `tests/methods/user_map.rs` of `integrators`). Only where log g
+//! does not exist (far from e, outside the steps integrators take) is the matrix product used,
+//! rounded at ε|μ|.
 //!
 //! ## The fused overrides
 //! [`DiscretizationMap`] (and [`crate::RightDiscretizationMap`] through it) overrides every
@@ -189,15 +190,15 @@ pub trait LiftedMap<G: LieGroup>: Discretization<G> {
     /// [`Self::first_velocity`] less ξ in increment form: O(h|ξ|² + |ζ|), rounded relative to
     /// that size rather than to |ξ|, so that a step solving for ξ − ξ_k (the Euler–Poincaré step)
     /// and adding its velocity change to ξ_k keeps its rounding at that size. The provided form is
-    /// `first_velocity(hξ, ξ, ζ) − ξ`, rounded at ε|ξ|; the θ-maps override it.
+    /// `(Ad_{a(hξ)⁻¹} − I) ξ + d^L a_{hξ} ζ` with the Ad term from `log a(hξ)⁻¹`
+    /// (`LieGroup::exp_adjoint_increment`; the matrix product where log fails, rounded at ε|ξ|).
     fn first_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
-        self.first_velocity(&xi.scale(h), xi, zeta).sub(xi)
+        composed::first_velocity_increment(self, h, xi, zeta)
     }
     /// For the field's step `η = hξ`: `ξ_{k+1} − ξ`, the [`Self::second_velocity`] less ξ in
-    /// increment form (see [`Self::first_velocity_increment`]); the provided form is
-    /// `second_velocity(hξ, ξ, ζ) − ξ`.
+    /// increment form (see [`Self::first_velocity_increment`]), with b for a.
     fn second_velocity_increment(&self, h: f64, xi: &G::Algebra, zeta: &G::Algebra) -> G::Algebra {
-        self.second_velocity(&xi.scale(h), xi, zeta).sub(xi)
+        composed::second_velocity_increment(self, h, xi, zeta)
     }
     /// For the field's step `η = hξ` at `ζ = ζ(ξ)`: `(A, B)` with
     /// `∂/∂ξ first_velocity(hξ, ξ, ζ(ξ)) = A + B ∂ζ/∂ξ` — A the derivative with ζ held fixed,

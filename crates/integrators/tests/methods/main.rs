@@ -32,4 +32,5 @@ mod product_groups;
 mod right_trivialized;
 mod robustness;
 mod splitting;
+mod user_map;
 mod warm_start;
