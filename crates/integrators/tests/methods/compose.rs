@@ -316,16 +316,17 @@ fn theta_half_base_and_its_compositions_are_symmetric_step_then_back_is_identity
     }
 }
 
-/// Lie–Poisson θ = 0 and θ = 1 without a potential are their own adjoints (the two steps
-/// coincide, and each is the other's adjoint): reversible to round-off, and the triple jump
-/// raises them to order 4 (fitted against the axisymmetric closed form); with a potential they
-/// are not symmetric and are refused.
+/// Lie–Poisson without a potential is its own adjoint at every θ on Cayley (the step sees only
+/// the increment cay(θη) cay((1−θ)η), reversible; at θ = 0 and 1 the two steps coincide and each
+/// is the other's adjoint): reversible to round-off, and the triple jump raises it to order 4
+/// (fitted against the axisymmetric closed form); with a potential θ = 0 is not symmetric and is
+/// refused.
 #[test]
-fn theta_0_and_1_without_a_potential_are_symmetric_bases() {
+fn lie_poisson_without_a_potential_is_a_symmetric_base_at_every_theta() {
     let body = RigidBody::principal(1.0, 1.0, 2.0).unwrap();
     let pi0 = Vector3::new(0.3, 0.4, 1.0);
     let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
-    for theta in [0.0, 1.0] {
+    for theta in [0.0, 0.3, 1.0] {
         let mut base =
             LiePoisson::<So3, Cayley, _>::new(body.clone(), theta, pi0, Some(g0)).unwrap();
         assert!(base.is_symmetric() && base.info().symmetric, "θ = {theta}");
@@ -360,9 +361,12 @@ fn theta_0_and_1_without_a_potential_are_symmetric_bases() {
 #[test]
 fn composition_refuses_non_symmetric_base_methods() {
     let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 1.0, Vector3::new(0.0, 0.1, 0.5)).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
+    let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     for theta in [0.3, 0.7] {
-        let base = LiePoisson::<So3, Cayley, _>::new(body.clone(), theta, pi0, None).unwrap();
+        // (without a potential Lie–Poisson is symmetric at every θ: see above)
+        let base = LiePoisson::<So3, Cayley, _>::new(top.clone(), theta, pi0, Some(g0)).unwrap();
         assert!(!base.is_symmetric());
         let err = Composition::new(base, CompositionScheme::kahan_li_6()).unwrap_err();
         assert!(
