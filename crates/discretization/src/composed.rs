@@ -72,7 +72,7 @@ impl<G: LieGroup, M: Discretization<G>> Discretization<G> for Composed<M> {
 impl<G: LieGroup, M: Discretization<G>> LiftedMap<G> for Composed<M> {}
 
 /// η for the left map: η itself on the left, −η on the right.
-fn left_eta<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M, eta: &G::Algebra) -> G::Algebra {
+fn left_eta<G: LieGroup, M: Discretization<G>>(map: &M, eta: &G::Algebra) -> G::Algebra {
     match map.side() {
         Side::Left => eta.clone(),
         Side::Right => eta.neg(),
@@ -80,7 +80,7 @@ fn left_eta<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M, eta: &G::Algebr
 }
 
 /// `ḡ = g_k a(η)⁻¹`; on the right `(g_k⁻¹ a(−η)⁻¹)⁻¹ = a(−η) g_k`.
-pub(crate) fn base_point<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn base_point<G: LieGroup, M: Discretization<G>>(
     map: &M,
     gk: &G,
     eta: &G::Algebra,
@@ -92,7 +92,7 @@ pub(crate) fn base_point<G: LieGroup, M: Discretization<G> + ?Sized>(
 }
 
 /// `g_{k+1} = ḡ b(η)`; on the right `(ḡ⁻¹ b(−η))⁻¹ = b(−η)⁻¹ ḡ`.
-pub(crate) fn second_point<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn second_point<G: LieGroup, M: Discretization<G>>(
     map: &M,
     gbar: &G,
     eta: &G::Algebra,
@@ -136,7 +136,7 @@ fn finite_log<G: LieGroup>(g: &G) -> Option<G::Algebra> {
 /// `δ_g = Ad*_g − I` ([`coadjoint_increment`]), `Δ = δ_{a⁻¹}(μ_k) + ν` and
 /// `μ_{k+1} − μ_k = Δ + δ_b(μ_k) + δ_b(Δ)`, so μ_k enters once and |μ|² follows the rounding of
 /// the increments, not of a(η)'s and b(η)'s entries.
-fn left_momentum_update<G: LieGroup, M: Discretization<G> + ?Sized>(
+fn left_momentum_update<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     mu_k: &G::Algebra,
@@ -161,7 +161,7 @@ fn left_momentum_update<G: LieGroup, M: Discretization<G> + ?Sized>(
     }
 }
 
-pub(crate) fn momentum_update<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn momentum_update<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     mu_k: &G::Algebra,
@@ -171,7 +171,7 @@ pub(crate) fn momentum_update<G: LieGroup, M: Discretization<G> + ?Sized>(
 }
 
 /// The μ-component of `α̃⁻¹ ∘ T*R̃_d ∘ Φ̃⁻¹` at `(e, η)`.
-fn left_base_momentum<G: LieGroup, M: Discretization<G> + ?Sized>(
+fn left_base_momentum<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     mu_k: &G::Algebra,
@@ -183,7 +183,7 @@ fn left_base_momentum<G: LieGroup, M: Discretization<G> + ?Sized>(
         .clone()
 }
 
-pub(crate) fn base_momentum<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn base_momentum<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     mu_k: &G::Algebra,
@@ -194,7 +194,7 @@ pub(crate) fn base_momentum<G: LieGroup, M: Discretization<G> + ?Sized>(
 
 /// `∂μ̄/∂η` with ν fixed, by differences of η ↦ μ̄(η, μ_k, μ_{k+1}(η; ν)); ν is read back from
 /// the update: `(e, μ_{k+1})·(b(η)⁻¹, 0)` has the fibre `Ad*_{b⁻¹} μ_{k+1} = transported + ν`.
-fn left_base_momentum_derivative<G: LieGroup, M: Discretization<G> + ?Sized>(
+fn left_base_momentum_derivative<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     mu_k: &G::Algebra,
@@ -216,7 +216,7 @@ fn left_base_momentum_derivative<G: LieGroup, M: Discretization<G> + ?Sized>(
     )
 }
 
-pub(crate) fn base_momentum_derivative<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn base_momentum_derivative<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     mu_k: &G::Algebra,
@@ -229,7 +229,7 @@ pub(crate) fn base_momentum_derivative<G: LieGroup, M: Discretization<G> + ?Size
 }
 
 /// `∂μ̄/∂ν = d^{L*}b_η Ad*_{b(η)} = (Ad_{b(η)} d^L b_η)ᵀ` (from `μ_{k+1} = Ad*_b(… + ν)`).
-pub(crate) fn base_momentum_impulse_derivative<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn base_momentum_impulse_derivative<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
 ) -> G::Operator {
@@ -242,7 +242,7 @@ pub(crate) fn base_momentum_impulse_derivative<G: LieGroup, M: Discretization<G>
 
 /// `ḡ = g_k a(η)⁻¹`: `ḡ⁻¹∂ḡ = a ∂(a⁻¹) = −(∂a) a⁻¹ = −Ad_a (a⁻¹∂a) = −Ad_{a(η)} d^L a_η`. Not on
 /// the right (it depends on g_k there).
-pub(crate) fn base_point_derivative<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn base_point_derivative<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
 ) -> Option<G::Operator> {
@@ -258,7 +258,7 @@ pub(crate) fn base_point_derivative<G: LieGroup, M: Discretization<G> + ?Sized>(
 }
 
 /// The two velocities of `R̃_d^T(e, ξ, η, ζ)` (eq. 16), for the left map.
-fn left_velocities<G: LieGroup, M: Discretization<G> + ?Sized>(
+fn left_velocities<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     xi: &G::Algebra,
@@ -269,7 +269,7 @@ fn left_velocities<G: LieGroup, M: Discretization<G> + ?Sized>(
     (first.into_parts().1, second.into_parts().1)
 }
 
-pub(crate) fn first_velocity<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn first_velocity<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     xi: &G::Algebra,
@@ -278,7 +278,7 @@ pub(crate) fn first_velocity<G: LieGroup, M: Discretization<G> + ?Sized>(
     left_velocities(map, &left_eta(map, eta), xi, zeta).0
 }
 
-pub(crate) fn second_velocity<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn second_velocity<G: LieGroup, M: Discretization<G>>(
     map: &M,
     eta: &G::Algebra,
     xi: &G::Algebra,
@@ -289,7 +289,7 @@ pub(crate) fn second_velocity<G: LieGroup, M: Discretization<G> + ?Sized>(
 
 /// `(A, B)`: A by differences of ξ ↦ ξ_k(hξ, ξ, ζ) at fixed ζ, `B = d^L a_{hξ}` (ξ_k is
 /// `Ad_{a⁻¹} ξ + d^L a_η ζ`, linear in ζ). On the right: the left map's at −h.
-pub(crate) fn first_velocity_derivative<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn first_velocity_derivative<G: LieGroup, M: Discretization<G>>(
     map: &M,
     h: f64,
     xi: &G::Algebra,
@@ -303,7 +303,7 @@ pub(crate) fn first_velocity_derivative<G: LieGroup, M: Discretization<G> + ?Siz
 /// `ξ_k − ξ = (Ad_{a(hξ)⁻¹} − I) ξ + d^L a_{hξ} ζ` (the first velocity of `R̃_d^T(e, ξ, hξ, ζ)`
 /// less ξ), the Ad term in increment form ([`adjoint_increment`]): rounded relative to
 /// O(h|ξ|² + |ζ|), not to |ξ|. On the right: the left map's at −h.
-pub(crate) fn first_velocity_increment<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn first_velocity_increment<G: LieGroup, M: Discretization<G>>(
     map: &M,
     h: f64,
     xi: &G::Algebra,
@@ -315,7 +315,7 @@ pub(crate) fn first_velocity_increment<G: LieGroup, M: Discretization<G> + ?Size
 }
 
 /// `ξ_{k+1} − ξ = (Ad_{b(hξ)⁻¹} − I) ξ + d^L b_{hξ} ζ`, as [`first_velocity_increment`].
-pub(crate) fn second_velocity_increment<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub(crate) fn second_velocity_increment<G: LieGroup, M: Discretization<G>>(
     map: &M,
     h: f64,
     xi: &G::Algebra,
@@ -327,7 +327,7 @@ pub(crate) fn second_velocity_increment<G: LieGroup, M: Discretization<G> + ?Siz
 }
 
 /// h for the left map: h itself on the left, −h on the right.
-fn left_h<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M, h: f64) -> f64 {
+fn left_h<G: LieGroup, M: Discretization<G>>(map: &M, h: f64) -> f64 {
     match map.side() {
         Side::Left => h,
         Side::Right => -h,

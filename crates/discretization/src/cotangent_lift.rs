@@ -30,7 +30,7 @@ use trivial_bundles::prelude::*;
 /// Each `Ad*_{a⁻¹} μ₁` is the covector μ₁ at a carried back to e, the fibre of the product
 /// `(a, μ₁)·(a⁻¹, 0)` of T*G; `ad*_ξ q` is the trivialization of T*(G ⋉ 𝔤) (the pairing with
 /// `δξ = ξ̃ + [ξ, ξ̄]`).
-pub fn cotangent_map<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub fn cotangent_map<G: LieGroup, M: Discretization<G>>(
     map: &M,
     x: &TangentBundle<G>,
     mu1: &G::Algebra,
@@ -62,7 +62,7 @@ pub fn cotangent_map<G: LieGroup, M: Discretization<G> + ?Sized>(
 ///
 /// `(ḡ, μ̄, η, ν)` with `μ̄ = −d^{L*}a_η μ_k + d^{L*}b_η μ_{k+1}`,
 /// `ν = Ad*_{b(η)⁻¹} μ_{k+1} − Ad*_{a(η)⁻¹} μ_k`.
-pub fn cotangent_lift_inverse_at<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub fn cotangent_lift_inverse_at<G: LieGroup, M: Discretization<G>>(
     map: &M,
     base: &TangentBundle<G>,
     mu_k: &G::Algebra,

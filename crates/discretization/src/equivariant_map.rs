@@ -213,7 +213,7 @@ fn probe_directions<G: LieGroup>(s: f64) -> [G::Algebra; 2] {
 const EXACT: f64 = 1e-12;
 
 /// `max_v ‖a(sv) − b(−sv)‖` over the probe directions: the map against its adjoint.
-fn adjoint_defect<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M, s: f64) -> f64 {
+fn adjoint_defect<G: LieGroup, M: Discretization<G>>(map: &M, s: f64) -> f64 {
     probe_directions::<G>(s)
         .iter()
         .map(|v| {
@@ -224,7 +224,7 @@ fn adjoint_defect<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M, s: f64) -
 }
 
 /// `max_v ‖c(sv) c(−sv) − e‖`, c(ξ) = a(ξ)⁻¹ b(ξ): the increment against its reverse.
-fn increment_defect<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M, s: f64) -> f64 {
+fn increment_defect<G: LieGroup, M: Discretization<G>>(map: &M, s: f64) -> f64 {
     let c = |x: &G::Algebra| map.first_factor(x).inverse().compose(&map.second_factor(x));
     probe_directions::<G>(s)
         .iter()
@@ -240,13 +240,13 @@ fn vanishes_to_second_order(at_2s: f64, at_s: f64) -> bool {
 
 /// [`Discretization::symmetric`] measured: `‖a(ξ) − b(−ξ)‖ ≤ 10⁻¹²` at the two probe
 /// directions, |ξ|_max = 0.1 (a map that is not symmetric differs there by O(|ξ|) or O(|ξ|²)).
-pub fn probe_symmetric<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M) -> bool {
+pub fn probe_symmetric<G: LieGroup, M: Discretization<G>>(map: &M) -> bool {
     adjoint_defect::<G, M>(map, 0.1) <= EXACT
 }
 
 /// [`Discretization::order`] measured: 2 where the defect `‖a(ξ) − b(−ξ)‖` is zero or falls
 /// like |ξ|³ between |ξ|_max = 0.04 and 0.02 (second-order agreement with the adjoint), else 1.
-pub fn probe_order<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M) -> u32 {
+pub fn probe_order<G: LieGroup, M: Discretization<G>>(map: &M) -> u32 {
     let (d2, d1) = (
         adjoint_defect::<G, M>(map, 0.04),
         adjoint_defect::<G, M>(map, 0.02),
@@ -260,14 +260,14 @@ pub fn probe_order<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M) -> u32 {
 
 /// [`Discretization::reversible_increment`] measured: `‖c(ξ) c(−ξ) − e‖ ≤ 10⁻¹²` at the probe
 /// directions, |ξ|_max = 0.2.
-pub fn probe_reversible_increment<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M) -> bool {
+pub fn probe_reversible_increment<G: LieGroup, M: Discretization<G>>(map: &M) -> bool {
     increment_defect::<G, M>(map, 0.2) <= EXACT
 }
 
 /// [`Discretization::increment_order`] measured: 2 where `‖c(ξ) c(−ξ) − e‖` is zero or falls
 /// faster than |ξ|² between |ξ|_max = 0.2 and 0.1 (`c(ξ) c(−ξ) = exp(2c₂(ξ) + O(|ξ|³))` for
 /// `c(ξ) = exp(ξ + c₂(ξ) + …)`), else 1.
-pub fn probe_increment_order<G: LieGroup, M: Discretization<G> + ?Sized>(map: &M) -> u32 {
+pub fn probe_increment_order<G: LieGroup, M: Discretization<G>>(map: &M) -> u32 {
     let (d2, d1) = (
         increment_defect::<G, M>(map, 0.2),
         increment_defect::<G, M>(map, 0.1),

@@ -4,7 +4,10 @@
 //! retraction and discretization maps on a Lie group G, their tangent and cotangent lifts, and the
 //! inverses that integrators are built from. Everything is generic over the group G and the τ map
 //! (`lie_groups::ExpMap`, `lie_groups::Cayley`), and built from the maps of `trivial-bundles`
-//! (κ̃, α̃) and the tangent maps of τ (d^L τ, d^R τ and their duals).
+//! (κ̃, α̃, the products of TG and T*G) and the tangent maps of τ (d^L τ, d^R τ and their duals).
+//! Any left-equivariant map `R̃_d(g, ξ) = (g a(ξ), g b(ξ))` — the paper's θ-family or a user's
+//! own — gets the same lifts and every component an integrator needs ([`Discretization`],
+//! [`LiftedMap`]; "Your own map" below).
 //!
 //! ## Conventions
 //! As in `lie-groups`: `Ad*_g := (Ad_g)ᵀ`, `ad*_ξ := (ad_ξ)ᵀ`, `d^L τ_ξ(η) = τ(ξ)⁻¹ (d/ds) τ(ξ+sη)`,
@@ -37,10 +40,19 @@
 //!   `R̃_d^{T*}(g, μ, ξ, ν) = ((g τ(−θξ), Ad*_{τ(−θξ)}(λ − ν)), (g τ((1−θ)ξ), Ad*_{τ((1−θ)ξ)} λ))`;
 //!   its inverse is explicit: `μ = θ d^{L*}τ_{−θξ} μ_k + (1−θ) d^{L*}τ_{(1−θ)ξ} μ_{k+1}`,
 //!   `ν = Ad*_{τ(−(1−θ)ξ)} μ_{k+1} − Ad*_{τ(θξ)} μ_k`.
+//! - Any left-equivariant map ([`Discretization`]): `R̃_d(g, ξ) = (g a(ξ), g b(ξ))`, given by its
+//!   factors a, b (the θ-family: `a(ξ) = τ(−θξ)`, `b(ξ) = τ((1−θ)ξ)`). The lifts above are
+//!   written once for it ([`tangent_map`], [`tangent_lift`], [`cotangent_map`],
+//!   [`cotangent_lift_inverse_at`]); its descriptors (order, symmetry, the offset θ of the base
+//!   point) come from the map itself, measured against its adjoint ([`Adjoint`]:
+//!   `a*(ξ) = b(−ξ)`, `b*(ξ) = a(−ξ)`) unless the map states them.
 //! - What an integrator needs ([`LiftedMap`]): the components of the lifts a step of eq. (18) or
 //!   (19) evaluates — base and second points, the momentum update and base momentum of
-//!   `(R̃_d^{T*})⁻¹`, the velocities of `R̃_d^T` — fused, allocation-free, in increment form, with
-//!   the derivatives Newton needs. The `integrators` crate is written against this trait alone.
+//!   `(R̃_d^{T*})⁻¹`, the velocities of `R̃_d^T`, the derivatives Newton needs. Each is provided,
+//!   composed from the general lifts of the map's factors (the default path, in increment form);
+//!   [`DiscretizationMap`] overrides them with fused θ-formulas — allocation-free, sharing τ's
+//!   coefficients — which the tests pin to the default path ([`Composed`]). The `integrators`
+//!   crate is written against this trait alone.
 //! - The right-trivialized map ([`RightDiscretizationMap`], "defined analogously" in §3):
 //!   `R̃_d^R(g, ξ) = (τ(−θξ) g, τ((1−θ)ξ) g)` with `u_g = ξ g`; inversion carries it onto the left
 //!   map at (g⁻¹, −ξ), so its lifts are the left ones at −η with the points multiplied on the left
@@ -48,6 +60,56 @@
 //!   and keep `Ad*_g μ`.
 //! - The same maps on ℝⁿ ([`VectorSpaceDiscretization`]), where they are the θ-method, the implicit
 //!   midpoint rule and symplectic Euler.
+//!
+//! ## Your own map
+//! Implement [`Discretization`] with the two factors, and [`LiftedMap`] with nothing: the tangents
+//! of a and b come from finite differences (≈ 3·10⁻¹³ relative; override `first_factor_tangent`
+//! and `second_factor_tangent` where closed forms exist, e.g. `p d^Lτ_{pξ}` for `a(ξ) = τ(pξ)`),
+//! every lift component from the paper's composition, the descriptors from measuring the map.
+//! `integrators::CotangentLiftIntegrator::with_map` and `integrators::TangentLiftIntegrator::with_map`
+//! then integrate with it; their `info()` reports the order and symmetry the map has. Here a map
+//! that is not a θ-map — `a(ξ) = e`, `b(ξ) = exp(ξ/2) cay(ξ/2)`:
+//! ```
+//! use discretization::{Composed, Discretization, DiscretizationMap, LiftedMap};
+//! use lie_groups::{Cayley, CayleyGroup, LieGroup, So3};
+//! use nalgebra::Vector3;
+//!
+//! #[derive(Debug, Clone, Copy)]
+//! struct HalfAndHalf;
+//! impl Discretization<So3> for HalfAndHalf {
+//!     fn first_factor(&self, _xi: &Vector3<f64>) -> So3 {
+//!         So3::identity()
+//!     }
+//!     fn second_factor(&self, xi: &Vector3<f64>) -> So3 {
+//!         So3::exp(&(xi * 0.5)).compose(&So3::cay(&(xi * 0.5)))
+//!     }
+//! }
+//! impl LiftedMap<So3> for HalfAndHalf {}
+//!
+//! let m = HalfAndHalf;
+//! // measured descriptors: θ = 0 (the base point is g_k), order 1, not symmetric; the
+//! // increment c = b is reversible, so Lie–Poisson without a potential is symmetric
+//! assert!(m.theta().abs() < 1e-12 && m.base_is_first_point());
+//! assert!(m.order() == 1 && !m.symmetric() && m.reversible_increment());
+//!
+//! // one Lie–Poisson step by hand from its components: ξ = h 𝕀⁻¹ μ̄, μ̄ = base momentum
+//! let (h, inertia_inv) = (0.01, Vector3::new(1.0, 0.5, 0.25));
+//! let mu_k = Vector3::new(0.3, 1.0, -0.5);
+//! let mut eta = (mu_k.component_mul(&inertia_inv)) * h;
+//! for _ in 0..30 {
+//!     eta = m.base_momentum_from_impulse(&eta, &mu_k, None).component_mul(&inertia_inv) * h;
+//! }
+//! let mu_next = m.momentum_update(&eta, &mu_k, None).next;
+//! assert!((mu_next.norm() - mu_k.norm()).abs() < 1e-15); // on the coadjoint orbit
+//!
+//! // the θ = 0 map on Cayley has the same form with b = cay: its fused components are the
+//! // composed ones
+//! let fused = DiscretizationMap::<Cayley>::new(0.0).unwrap();
+//! let composed = Composed(fused);
+//! let a = LiftedMap::<So3>::base_momentum_from_impulse(&fused, &eta, &mu_k, None);
+//! let b = LiftedMap::<So3>::base_momentum_from_impulse(&composed, &eta, &mu_k, None);
+//! assert!((a - b).norm() < 1e-15);
+//! ```
 //!
 //! ## Example: the θ = 0 Lie–Poisson scheme of §4 on SO(3)
 //! ```

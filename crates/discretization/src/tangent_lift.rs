@@ -27,7 +27,7 @@ use trivial_bundles::prelude::*;
 ///
 /// since `(g, ξ̄)(h, v) = (gh, Ad_{h⁻¹} ξ̄ + v)` and the body velocity of `g a(ξ)` is
 /// `Ad_{a⁻¹} g⁻¹δg + a⁻¹ δa`. It covers R̃_d: `pr₁₂` of the result is `R̃_d(g, ξ)`.
-pub fn tangent_map<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub fn tangent_map<G: LieGroup, M: Discretization<G>>(
     map: &M,
     x: &Ttg<G>,
 ) -> (TangentBundle<G>, TangentBundle<G>) {
@@ -50,7 +50,7 @@ pub fn tangent_map<G: LieGroup, M: Discretization<G> + ?Sized>(
 /// `R̃_d^T(g, ξ, η, ζ) = ((g a(η), Ad_{a(η)⁻¹} ξ + d^L a_η ζ), (g b(η), Ad_{b(η)⁻¹} ξ + d^L b_η ζ))`.
 ///
 /// It makes the diagram of eq. 16 commute: `pr₁₂ ∘ R̃_d^T = R̃_d ∘ pr₁₃`.
-pub fn tangent_lift<G: LieGroup, M: Discretization<G> + ?Sized>(
+pub fn tangent_lift<G: LieGroup, M: Discretization<G>>(
     map: &M,
     x: &Ttg<G>,
 ) -> (TangentBundle<G>, TangentBundle<G>) {

@@ -1,5 +1,8 @@
-//! The cotangent-lift (Lie–Poisson) integrator, eq. (19) of the paper, for the discretization map
-//! `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))`, θ ∈ [0, 1].
+//! The cotangent-lift (Lie–Poisson) integrator, eq. (19) of the paper, for any discretization map
+//! `R̃_d(g, ξ) = (g a(ξ), g b(ξ))` ([`discretization::Discretization`]); [`LiePoisson`] is the one of
+//! the paper's θ-map `R̃_d(g, ξ) = (g τ(−θξ), g τ((1−θ)ξ))`, θ ∈ [0, 1]. The derivation below is
+//! written for the θ-map; for any a, b replace `τ(−θξ)` by a(ξ), `τ((1−θ)ξ)` by b(ξ),
+//! `−θ d^Lτ_{−θξ}` by `d^L a_ξ` and `(1−θ) d^Lτ_{(1−θ)ξ}` by `d^L b_ξ`.
 //!
 //! ## Derivation (composing α̃, T*R̃_d⁻¹ and Φ̃ as in §4)
 //! Write `ḡ = g_k τ(θξ)` for the base point, so that `g_k = ḡ τ(−θξ)` and
@@ -28,6 +31,45 @@
 //! to round-off, and the μ-equation does not involve g (reconstruction is optional). Using
 //! `d^{R*}τ_ξ = d^{L*}τ_ξ Ad*_{τ(ξ)}`, the schemes for θ = 0 and θ = 1 coincide without a
 //! potential. Measured orders: see the crate page.
+//!
+//! ## Your own map
+//! A map given by its factors ([`discretization::Discretization`], with an empty
+//! `impl LiftedMap<G>`) is integrated by [`CotangentLiftIntegrator::with_map`]: every piece of
+//! the step comes from the composition of the paper's lifts, and `info()` reports the order and
+//! symmetry the map has (`tests/methods/user_map.rs` fits them for maps outside the θ-family):
+//!
+//! ```
+//! use discretization::{Discretization, LiftedMap};
+//! use integrators::{CotangentLiftIntegrator, Integrator};
+//! use lie_groups::{CayleyGroup, LieGroup, So3};
+//! use mechanics::RigidBody;
+//! use nalgebra::Vector3;
+//!
+//! /// `R̃_d(g, ξ) = (g exp(−ξ/3), g cay(2ξ/3))`: two different τ.
+//! #[derive(Debug, Clone, Copy)]
+//! struct ExpCayley;
+//! impl Discretization<So3> for ExpCayley {
+//!     fn first_factor(&self, xi: &Vector3<f64>) -> So3 {
+//!         So3::exp(&(xi / -3.0))
+//!     }
+//!     fn second_factor(&self, xi: &Vector3<f64>) -> So3 {
+//!         So3::cay(&(xi * (2.0 / 3.0)))
+//!     }
+//! }
+//! impl LiftedMap<So3> for ExpCayley {}
+//!
+//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let pi0 = Vector3::new(0.5, 1.0, 0.2);
+//! let mut lp = CotangentLiftIntegrator::with_map(body, ExpCayley, pi0, Some(So3::identity()))?;
+//! for _ in 0..100 {
+//!     lp.step(0.01)?;
+//! }
+//! assert!((lp.casimir().unwrap() - pi0.norm_squared()).abs() < 1e-14);
+//! // without a potential the step sees only c(η) = exp(η/3) cay(2η/3), reversible:
+//! let info = lp.info();
+//! assert!(info.symmetric && info.order == 2);
+//! # Ok::<(), integrators::IntegratorError>(())
+//! ```
 //!
 //! The Newton Jacobian of the ξ-equation differentiates μ̄ through
 //! `D(ζ; μ) = ∂/∂ζ (d^{L*}τ_ζ μ)` ([`lie_groups::Tau::dtau_left_dual_derivative`]): exact on SO(3)
@@ -63,8 +105,9 @@ use lie_groups::{LieGroup, Operator, Vector};
 /// ```
 pub type LiePoisson<G, T, S> = CotangentLiftIntegrator<G, DiscretizationMap<T>, S>;
 
-/// The cotangent lift `R̃_d^{T*}` of a discretization map `M` (any [`LiftedMap`]) applied to the
-/// Hamiltonian vector field of the system `S` (eq. 19): each step solves
+/// The cotangent lift `R̃_d^{T*}` of a discretization map `M` (any [`LiftedMap`]: the θ-maps, or a
+/// user's own, see the module page) applied to the Hamiltonian vector field of the system `S`
+/// (eq. 19): each step solves
 /// `(R̃_d^{T*})⁻¹((g_k, μ_k), (g_{k+1}, μ_{k+1})) = h X̃(ḡ, μ̄)` for the one unknown η = h ∂h/∂μ(μ̄).
 /// Every piece of the lift comes from `M`; this type adds the vector field, the solver and the
 /// state.
