@@ -168,9 +168,9 @@ fn heavy_top(c: &mut Criterion) {
     group.finish();
 }
 
-/// The SE(3) satellite's splitting as it was before the closed forms: four pieces (the three
-/// principal-axis rotations, the translation) by the trait's generic `Se3::exp` / Ad* flows —
-/// the same-run comparison for `RigidBodySe3`'s own two in-place pieces.
+/// The SE(3) satellite's splitting by generic pieces: four (the three principal-axis rotations,
+/// the translation) by the trait's generic `Se3::exp` / Ad* flows — the same-run comparison for
+/// `RigidBodySe3`'s own two in-place pieces.
 #[derive(Clone)]
 struct FourGenericPieces(RigidBodySe3);
 

@@ -1,13 +1,15 @@
 //! Steps one method of the trade tables n times: the driver for load-independent per-step costs
 //! (instruction counts) when the machine is shared and wall-clock figures are not to be trusted.
+//! `cargo xtask docs --only callgrind-step-cost` runs it under callgrind for every method of
+//! docs/benchmarks.md's instruction tables; by hand:
 //!
 //! ```text
 //! cargo build --release -p lie-integrators --example step_cost
-//! for n in 20000 40000; do
+//! for n in 2000 4000; do
 //!   valgrind --tool=callgrind --callgrind-out-file=/tmp/cg.$n \
 //!     target/release/examples/step_cost free/processed/blanes-casas-murua-6-11 $n
 //! done
-//! # instructions per step = (Ir(40000) − Ir(20000)) / 20000, Ir from the "summary:" line
+//! # instructions per step = (Ir(4000) − Ir(2000)) / 2000, Ir from the "summary:" line
 //! ```
 //!
 //! The systems and steps are those of `benches/splitting.rs` (free body 𝕀 = diag(1, 2, 3),

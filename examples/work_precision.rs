@@ -13,8 +13,12 @@
 //!   `max_k ||Π_k|² − |Π₀|²|/|Π₀|²` over T = 1000;
 //! - the same over T = 10⁵ for the coarse steps h ≥ 0.05.
 //!
-//! It prints the table, a summary (the cheapest method reaching each error target) and writes
-//! `docs/work-precision.csv`. Run: `cargo run --release -p lie-integrators --example work_precision` (a few minutes).
+//! It prints the table and a summary (the cheapest method reaching each error target) as Markdown,
+//! and writes the raw numbers as CSV to the path given as its argument, `docs/work-precision.csv`
+//! by default (written whole at the end: an interrupted run leaves the file as it was). Run:
+//! `cargo run --release -p lie-integrators --example work_precision [CSV]` (a few minutes), or
+//! `cargo xtask docs --only work-precision-example`, which also puts the table into
+//! docs/work-precision.md.
 
 use lie_integrators::integrators::baselines::{QuaternionRk4, Rkmk4};
 use lie_integrators::integrators::splitting::Splitting;
@@ -204,18 +208,19 @@ fn main() {
     );
     let ref_err = ((fine.0 - coarse.0).amax()).max((fine.1 - coarse.1).amax() / pi0().norm());
     println!(
-        "free rigid body 𝕀 = diag{INERTIA:?}, Π₀ = {:?}, R₀ = exp((0.3, −0.5, 0.8)^)",
+        "Free rigid body 𝕀 = diag{INERTIA:?}, Π₀ = {:?}, R₀ = exp((0.3, −0.5, 0.8)^).\n",
         pi0().as_slice()
     );
     println!(
-        "reference at T = {T_ERROR}: RK4 h = 1e-4 and 2e-4, Richardson; their difference {ref_err:.1e} \
-         bounds the h = 1e-4 error by {:.1e}, the extrapolated one is far below",
+        "Reference at T = {T_ERROR}: RK4 h = 1e-4 and 2e-4, Richardson; their difference {ref_err:.1e} \
+         bounds the h = 1e-4 error by {:.1e}, the extrapolated one is far below.\n",
         ref_err / 15.0
     );
     println!(
         "| {:<38} | {:>7} | {:>9} | {:>8} | {:>9} | {:>9} | {:>9} | {:>9} |",
         "method", "h", "err T=10", "ns/step", "ΔE T=1e3", "ΔC T=1e3", "ΔE T=1e5", "ΔC T=1e5"
     );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|");
     let mut rows = Vec::new();
     ladder(&mut rows, &reference, || {
         QuaternionRk4::new(body.clone(), pi0(), Some(r0())).unwrap()
@@ -258,8 +263,9 @@ fn main() {
             })
             .cloned()
     };
+    println!("\n```text");
     let summary = |title: &str, targets: &[f64], ok: &dyn Fn(&Row, f64) -> bool, t: f64| {
-        println!("\n{title}");
+        println!("{title}");
         for &target in targets {
             let b = cheapest(&rows, &|r| ok(r, target), true);
             let g = cheapest(&rows, &|r| ok(r, target), false);
@@ -278,6 +284,7 @@ fn main() {
                 show(&g)
             );
         }
+        println!();
     };
     summary(
         "cheapest run reaching each error at T = 10 (cost = ns/step × 10/h):",
@@ -297,6 +304,8 @@ fn main() {
         &|r, target| r.energy_t1e5.is_some_and(|e| e <= target),
         T_LONG,
     );
+
+    println!("```");
 
     let mut csv = String::from(
         "method,h,error_t10,ns_per_step,max_rel_energy_error_t1e3,max_rel_casimir_error_t1e3,\
@@ -318,10 +327,17 @@ fn main() {
         )
         .unwrap();
     }
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/work-precision.csv");
-    std::fs::write(path, csv).expect("write docs/work-precision.csv");
-    println!(
-        "\nwrote {path} ({} rows) in {:.0} s",
+    let path = std::env::args().nth(1).map_or_else(
+        || concat!(env!("CARGO_MANIFEST_DIR"), "/docs/work-precision.csv").into(),
+        std::path::PathBuf::from,
+    );
+    // Whole or not at all: a temporary file beside the target, renamed over it.
+    let tmp = path.with_extension("csv.tmp");
+    std::fs::write(&tmp, csv).expect("write the CSV");
+    std::fs::rename(&tmp, &path).expect("move the CSV into place");
+    eprintln!(
+        "wrote {} ({} rows) in {:.0} s",
+        path.display(),
         rows.len(),
         start.elapsed().as_secs_f64()
     );
