@@ -5,25 +5,23 @@
 //! may store Π = (Π₁, Π₂, Π₃) as a 16-byte pair and an 8-byte scalar, then load (Π₂, Π₃) as one
 //! 16-byte vector straddling both stores. The processor cannot forward such a load from its store
 //! buffer and waits for the stores to retire. Loads of single f64s are always contained in one
-//! store, so they are forwarded whatever the stores were. Measured in criterion (free rigid body,
-//! h = 0.01, with the attitude, same runs): `QuaternionRk4` 62.7 → 48–52 ns per step, `Rkmk4`
-//! 72.5 → 62.0; a hand-written RK4 with a time variable added, 50.2 → 46.6.
+//! store, so they are forwarded whatever the stores were. On a step as short as an RK4 step of the
+//! free rigid body that wait is a large part of the step (`benches/splitting.rs` times the
+//! library's steps against a hand-written one in the same run).
 //!
 //! [`read`] loads each entry on its own and passes it through an empty `asm!` block that takes
 //! and returns it in a register: the compiler can neither merge the loads nor load the entries
-//! again later (on other targets, [`core::hint::black_box`]). `black_box` alone, the former
-//! form, moves each entry through a stack slot of its own, and the compiler was free to reload
-//! those slots two at a time — the straddling load again, one level down: reading μ_k that way
-//! made the Lie–Poisson step slower, not faster. With the register barrier, `QuaternionRk4`
-//! 43–44 → 41–42 ns and Lie–Poisson Cayley θ = 0 with R 49–50 → 46–48 ns (μ_k read in the
-//! residual). On other targets the fallback is `black_box`, not measured there.
+//! again later (on other targets, [`core::hint::black_box`]). `black_box` alone is not enough: it
+//! moves each entry through a stack slot of its own, and the compiler is free to reload those
+//! slots two at a time — the straddling load again, one level down. On other targets the
+//! fallback is `black_box`, not measured there.
 //!
 //! [`read`] is used once per step or residual, on the state the previous step wrote: by the
 //! explicit steps short enough for the stall to matter, by the Lie–Poisson residual (μ_k), and
-//! by the warm start on the solution the last step recorded (`WarmStart::predict`: Lie–Poisson
-//! Cayley θ = 0 with R 69 → 62 ns). Not everywhere: reading ξ_k so in the Euler–Poincaré
-//! residual made its heavy-top steps 40 % slower (θ = ½ 125 → 172 ns, θ = 1 91 → 130) and was
-//! dropped: the same barrier that helps one step's code can cost another's.
+//! by the warm start on the solution the last step recorded (`WarmStart::predict`). Not
+//! everywhere: read so, ξ_k in the Euler–Poincaré residual made its heavy-top steps slower, not
+//! faster — the same barrier that helps one step's code can cost another's, so each use is kept
+//! only where the benches show it helps.
 
 use lie_groups::Vector;
 

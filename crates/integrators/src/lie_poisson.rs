@@ -585,7 +585,7 @@ mod tests {
     }
 
     /// The predictor is within O(h³) of the solution for every θ and τ, with and without a force: halving h divides the gap by 2³ (fitted order within [2.8, 3.3]
-    /// between h = 0.02 and h = 0.005). The former predictor h ∂h/∂μ(μ_k) was O(h²).
+    /// between h = 0.02 and h = 0.005); the plain predictor h ∂h/∂μ(μ_k) would be O(h²).
     #[test]
     fn predictor_is_third_order_accurate() {
         let inertia = Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0));

@@ -20,8 +20,8 @@
 //!   series, [`lie_groups::LieGroup::dexp_left_dual_derivative`]) and for Cayley on SO(3), SE(3)
 //!   and SE(2) (closed forms): there the Lie–Poisson Jacobian of a system without potential is
 //!   exact and Newton converges quadratically — on the free SE(3) body at h = 0.1, 3.0 iterations
-//!   per step, as many as Newton on a central-difference Jacobian (12.0 with the former
-//!   first-order D; `tests/newton_jacobian.rs`). Elsewhere (Cayley on SO(n), GL(n), a user's τ)
+//!   per step, as many as Newton on a central-difference Jacobian (with D's first-order term
+//!   alone the convergence is only linear; `tests/methods/newton_jacobian.rs`). Elsewhere (Cayley on SO(n), GL(n), a user's τ)
 //!   D is its leading term `δ ↦ −½ ad*_δ μ` and J is exact up to O(h²). With a potential the
 //!   Lie–Poisson matrix includes the force's term `∂μ̄/∂ν · h K(ḡ) · ∂ḡ/∂ξ`
 //!   ([`crate::System::force_derivative`], central differences unless the system gives it): the
@@ -80,8 +80,8 @@ pub struct SolverConfig {
     /// stop when `ρ/(1−ρ) ‖Δξ‖_max ≤ tolerance · ‖ξ‖_max`.
     /// The default 1e-14 is ~50 ulps: the residual itself is evaluated with a relative round-off
     /// of a few ulps. Values below the rounding floor 8ε ≈ 1.8e-15 are taken as that floor: the
-    /// iteration stops as converged as floating point allows (it used to cycle between
-    /// neighbouring floats into [`IntegratorError::NoConvergence`] with a residual of 1e-16).
+    /// iteration stops as converged as floating point allows, rather than cycling between
+    /// neighbouring floats into [`IntegratorError::NoConvergence`] with a residual of 1e-16.
     pub tolerance: f64,
     /// Maximum number of iterations before [`IntegratorError::NoConvergence`].
     pub max_iterations: usize,
@@ -226,9 +226,7 @@ pub fn solve<G: LieGroup, E>(
     // A reference that escapes on any path, even a cold one, makes the compiler keep ξ in memory
     // for the whole loop and reload it with loads wider than its stores, which the processor
     // cannot forward (see `crate::carried_state`); the copies cost nothing on the default path.
-    // Measured in criterion (free rigid body, h = 0.01, with R): Lie–Poisson Cayley θ = 0
-    // 54 → 48 ns, θ = ½ 58 → 52, with the residual inlined whole, which only pays once ξ stays
-    // in registers; the finite-difference Newton 355 → 209 ns.
+    // Inlining the residual whole into this loop pays only once ξ stays in registers.
     for it in 1..=config.max_iterations {
         let (r, by_products) = evaluate(&xi);
         let delta = match config.kind {
@@ -299,8 +297,8 @@ pub fn solve<G: LieGroup, E>(
         };
         // Below the rounding of the data (ROUNDING_UPDATES ulps of `scales.data`) the residual
         // cannot resolve ξ any better: there the iteration is as converged as floating point
-        // allows (it used to cycle or creep into NoConvergence where ξ is far smaller than its
-        // data). Updates that no longer contract (measured: ‖Δξ_k‖ ≥ ‖Δξ_{k−1}‖) have reached the
+        // allows (iterating on would cycle or creep into NoConvergence where ξ is far smaller than
+        // its data). Updates that no longer contract (measured: ‖Δξ_k‖ ≥ ‖Δξ_{k−1}‖) have reached the
         // noise of the residual itself — rounding, or an approximate derivative inside it (a
         // finite-difference Hessian, ~1e-10 relative) — and no further iteration can do better:
         // accepted while that noise is below √ε of the state the solution is added to
@@ -392,7 +390,7 @@ mod tests {
 
     /// An update below half an ulp of ξ leaves ξ bitwise unchanged: the iteration has reached a
     /// floating-point fixed point and stops (returning that evaluation), even when the tolerance
-    /// asks for more than round-off allows; it used to run into the iteration limit.
+    /// asks for more than round-off allows, rather than running into the iteration limit.
     #[test]
     fn an_update_that_no_longer_changes_xi_ends_the_iteration() {
         let config = SolverConfig {

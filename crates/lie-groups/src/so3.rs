@@ -158,8 +158,8 @@ fn cay_split_coeffs(theta: f64, w: &Vector3<f64>) -> Option<(f64, f64)> {
     }
 }
 
-/// The 3×3 product, unrolled and always inlined (nalgebra's generic product was left out of line
-/// on the integrators' step, ~70 instructions with the call).
+/// The 3×3 product, unrolled and always inlined (nalgebra's generic product can be left out of
+/// line on the integrators' step, and a call there costs about as much as the product itself).
 #[inline(always)]
 fn mul3(a: &Matrix3<f64>, b: &Matrix3<f64>) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| a[(i, 0)] * b[(0, j)] + a[(i, 1)] * b[(1, j)] + a[(i, 2)] * b[(2, j)])
@@ -264,8 +264,8 @@ fn exp_coeffs_trig(t2: f64) -> (f64, f64) {
 /// `(1 − (θ/2) cot(θ/2))/θ² = 1/θ² − (1 + cos θ)/(2θ sin θ)
 ///  = 1/12 + θ²/720 + θ⁴/30240 + θ⁶/1209600 + θ⁸/47900160 + …` (from x cot x = 1 − x²/3 − x⁴/45
 /// − 2x⁶/945 − x⁸/4725 − 2x¹⁰/93555 − …, x = θ/2). Below [`SMALL_ANGLE`] the series to θ⁸: the
-/// first omitted term is below 1e-18 relative there (the series used to stop at θ⁶, whose
-/// omitted θ⁸ term reached 2.5e-15 relative at the branch's edge).
+/// first omitted term is below 1e-18 relative there (stopped at θ⁶, the omitted θ⁸ term would
+/// reach 2.5e-15 relative at the branch's edge).
 ///
 /// Finite on [0, 2π); infinite at θ = 2π, where d^L exp is singular.
 #[inline]
@@ -957,8 +957,8 @@ mod tests {
 
     /// The small-angle series (below θ = 0.1) against 40-digit values (mpmath: sin θ/θ,
     /// (1 − cos θ)/θ², (θ − sin θ)/θ³, (1 − (θ/2)cot(θ/2))/θ² at the listed θ²), up to the branch's
-    /// edge: each within 2 ulps. (With `dexp_inv_coeff` stopped at θ⁶ as it was, the edge is
-    /// 2.4e-15 off.)
+    /// edge: each within 2 ulps. (`dexp_inv_coeff` stopped at θ⁶ would be 2.4e-15 off at the
+    /// edge: this test fails then.)
     #[test]
     #[allow(clippy::excessive_precision)] // mpmath's digits, kept verbatim
     fn small_angle_series_are_within_two_ulps_up_to_the_branch_edge() {

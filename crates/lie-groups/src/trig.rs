@@ -22,7 +22,7 @@
 //!
 //! Why: glibc's `sincos` is a call (with range reduction for any argument and the caller's
 //! vector registers spilled around it) that costs about as much as the whole rest of `So3::exp`;
-//! the kernels are about 25 instructions that inline and overlap with the rest.
+//! the kernels are short polynomials that inline and overlap with the rest.
 
 /// `c₀ + c₁x + c₂x² + c₃x³ + c₄x⁴` in Estrin's form `(c₀ + c₁x) + x²((c₂ + c₃x) + c₄x²)`:
 /// three dependent multiply-adds where Horner's form takes four, and products by the

@@ -135,8 +135,8 @@ impl<const N: usize> Vector for SVector<f64, N> {
             }
         })
     }
-    /// Branch-free: the AND of the entries' own tests, each independent of the others (the former
-    /// sum of `x − x` chained one addition per entry).
+    /// Branch-free: the AND of the entries' own tests, each independent of the others (a sum of
+    /// `x − x` would chain one dependent addition per entry).
     #[inline]
     fn is_finite(&self) -> bool {
         self.iter().fold(true, |ok, x| ok & x.is_finite())

@@ -6,7 +6,7 @@
 
 use crate::error::SimError;
 
-/// Steps a command takes without `--allow-large`: 10⁹ (minutes at 0.1–1 µs per step).
+/// Steps a command takes without `--allow-large`: 10⁹ (minutes at the cost of a typical step).
 pub const MAX_STEPS: u128 = 1_000_000_000;
 
 /// Bytes a command writes without `--allow-large`: 1 GiB.

@@ -176,9 +176,9 @@ impl<G: LieGroup> LieGroup for TangentBundle<G> {
         Self::from_parts(G::identity(), G::Algebra::zeros(G::dim()))
     }
     /// `(g, ξ)(h, η) = (gh, Ad_{h⁻¹} ξ + η)`.
-    // `inline(always)`: with the base parts inlined the body is ~200 instructions over SE(3), past
-    // LLVM's threshold; out of line, the 144-byte result went through a return slot and a memcpy
-    // (249 instructions per call against 201 inlined, callgrind on `benches/bundles.rs`).
+    // `inline(always)`: with the base parts inlined the body over SE(3) is past LLVM's inlining
+    // threshold; out of line, the 144-byte result goes through a return slot and a memcpy, which
+    // cost more than the product's arithmetic (`benches/bundles.rs` times it against its parts).
     #[inline(always)]
     fn compose(&self, other: &Self) -> Self {
         let xi = other.g.adjoint_inverse_apply(&self.xi).add(&other.xi);

@@ -151,8 +151,8 @@ impl<S: System<So3>> QuaternionRk4<S> {
 
     /// [`Self::attitude_step`] with Ω = ∂h/∂Π from [`System::velocity`]: the step of a system
     /// that declares no diagonal h, out of line so that the common step stays small enough for
-    /// the compiler to inline the system's force into its stages (inline, it took the heavy top's
-    /// step in `lie-sim` from 72 to 87 ns).
+    /// the compiler to inline the system's force into its stages (inlined here, it makes the
+    /// common step too large for that).
     #[inline(never)]
     fn general_attitude_step(
         &self,
@@ -226,8 +226,8 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
             }
             Some(q) => {
                 // The system's shape is tested once per step, not in each stage: a diagonal
-                // quadratic h (a body in principal axes) steps with Ω = a ∘ Π (52.7 → 47.1 ns per
-                // step on the free body, where the test inside the stages kept both arms alive).
+                // quadratic h (a body in principal axes) steps with Ω = a ∘ Π (a test inside the
+                // stages would keep both arms of the branch alive in every stage).
                 let (q1, pi1) = match self.system.diagonal_velocity() {
                     Some(a) => self.attitude_step(&|pi| pi.component_mul(&a), h, q, pi),
                     None => self.general_attitude_step(h, q, pi),

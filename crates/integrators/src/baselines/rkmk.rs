@@ -198,8 +198,8 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
             });
         }
         // g_k exp(Θ) in increment form, g_k + g_k (exp Θ − I): g stays on G up to a random walk
-        // of roundings, renormalized every RENORMALIZE_EVERY steps (a polar step at each cost
-        // the free body's step 7 ns, 15 % of it, and rounds g a second time).
+        // of roundings, renormalized every RENORMALIZE_EVERY steps (a polar step at each would
+        // be a sizeable part of the free body's step, and would round g a second time).
         let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
         let g1 = G::exp_compose(gk, &theta);
         let g1 = if renormalize { g1.normalize() } else { g1 };

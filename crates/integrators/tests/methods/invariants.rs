@@ -264,8 +264,8 @@ fn attitude_stays_orthogonal_to_round_off_over_1e7_steps() {
 /// On SO(3) the Newton Jacobian of the Lie–Poisson step is exact (closed forms of
 /// ∂/∂ζ (d^{L*}τ_ζ μ) for exp and Cayley), so Newton converges quadratically even at h = 0.1: every
 /// step takes at most as many iterations as Newton with a finite-difference Jacobian, and at most 3
-/// (two quadratic steps from the O(h²) predictor reach 1e-14, the third confirms). The former
-/// O(h²)-accurate Jacobian needed 5–6 here.
+/// (two quadratic steps from the O(h²) predictor reach 1e-14, the third confirms). An
+/// O(h²)-accurate Jacobian would converge only linearly and take more.
 #[test]
 fn lie_poisson_so3_newton_jacobian_is_exact_for_exp_and_cayley() {
     use integrators::{SolverConfig, SolverKind};
