@@ -1164,6 +1164,98 @@ pub fn all() -> Vec<Generator> {
             }),
         },
         Generator {
+            name: "bench-adaptive",
+            about: "tolerance-driven runs: the embedded pairs against ode_solvers' Dopri5 and DOP853",
+            takes: "4 min",
+            how: How::Bench(Bench {
+                bench: "adaptive",
+                filter: None,
+                measurement_time: 2,
+                tables: &[
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-free-body-1e-6",
+                        },
+                        Table::List {
+                            prefix: "adaptive/free_body/1e-6/",
+                            competitor: Some("adaptive/free_body/1e-6/ode_solvers::Dop853"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-free-body-1e-9",
+                        },
+                        Table::List {
+                            prefix: "adaptive/free_body/1e-9/",
+                            competitor: Some("adaptive/free_body/1e-9/ode_solvers::Dop853"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-free-body-1e-12",
+                        },
+                        Table::List {
+                            prefix: "adaptive/free_body/1e-12/",
+                            competitor: Some("adaptive/free_body/1e-12/ode_solvers::Dop853"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-overhead-free-body",
+                        },
+                        Table::List {
+                            prefix: "adaptive/overhead/free_body/",
+                            competitor: Some("adaptive/overhead/free_body/dop853(quaternion)/fixed"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-heavy-top-1e-6",
+                        },
+                        Table::List {
+                            prefix: "adaptive/fast_heavy_top/1e-6/",
+                            competitor: Some("adaptive/fast_heavy_top/1e-6/ode_solvers::Dop853"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-heavy-top-1e-9",
+                        },
+                        Table::List {
+                            prefix: "adaptive/fast_heavy_top/1e-9/",
+                            competitor: Some("adaptive/fast_heavy_top/1e-9/ode_solvers::Dop853"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-heavy-top-1e-12",
+                        },
+                        Table::List {
+                            prefix: "adaptive/fast_heavy_top/1e-12/",
+                            competitor: Some("adaptive/fast_heavy_top/1e-12/ode_solvers::Dop853"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "adaptive-overhead-heavy-top",
+                        },
+                        Table::List {
+                            prefix: "adaptive/overhead/fast_heavy_top/",
+                            competitor: Some("adaptive/overhead/fast_heavy_top/dop853(quaternion)/fixed"),
+                        },
+                    ),
+                ],
+            }),
+        },
+        Generator {
             name: "bench-ensemble",
             about: "256 trajectories × 1000 steps on 1 and 2 threads",
             takes: "1 min",
