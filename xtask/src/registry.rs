@@ -1165,7 +1165,8 @@ pub fn all() -> Vec<Generator> {
         },
         Generator {
             name: "bench-adaptive",
-            about: "tolerance-driven runs: the embedded pairs against ode_solvers' Dopri5 and DOP853",
+            about:
+                "tolerance-driven runs: the embedded pairs against ode_solvers' Dopri5 and DOP853",
             takes: "4 min",
             how: How::Bench(Bench {
                 bench: "adaptive",
@@ -1209,7 +1210,9 @@ pub fn all() -> Vec<Generator> {
                         },
                         Table::List {
                             prefix: "adaptive/overhead/free_body/",
-                            competitor: Some("adaptive/overhead/free_body/dop853(quaternion)/fixed"),
+                            competitor: Some(
+                                "adaptive/overhead/free_body/dop853(quaternion)/fixed",
+                            ),
                         },
                     ),
                     (
@@ -1249,7 +1252,9 @@ pub fn all() -> Vec<Generator> {
                         },
                         Table::List {
                             prefix: "adaptive/overhead/fast_heavy_top/",
-                            competitor: Some("adaptive/overhead/fast_heavy_top/dop853(quaternion)/fixed"),
+                            competitor: Some(
+                                "adaptive/overhead/fast_heavy_top/dop853(quaternion)/fixed",
+                            ),
                         },
                     ),
                 ],
