@@ -171,3 +171,8 @@ pub use retraction::Retraction;
 pub use right_discretization_map::RightDiscretizationMap;
 pub use tangent_lift::{tangent_lift, tangent_map};
 pub use vector_space::{Point, TangentPoint, VectorSpaceDiscretization};
+
+/// The README's example (the crate's page on crates.io), compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -165,3 +165,8 @@ pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};
 pub use system::System;
 pub use warm_start::WarmStart;
+
+/// The README's example (the crate's page on crates.io), compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

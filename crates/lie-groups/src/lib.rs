@@ -107,3 +107,8 @@ pub use so3::So3;
 pub use tau::{Cayley, CayleyGroup, ExpMap, Tau};
 pub use trig::sin_cos;
 pub use vector::Vector;
+
+/// The README's example (the crate's page on crates.io), compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

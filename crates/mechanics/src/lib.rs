@@ -56,3 +56,8 @@ pub use systems::{
     CoupledBodies, GeneralizedRigidBody, Gyrostat, HeavyTop, Pendulum3d, PlanarBody, Quadrotor,
     RigidBody, RigidBodySe3, Spring, UnderwaterVehicle,
 };
+
+/// The README's example (the crate's page on crates.io), compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -73,3 +73,8 @@ pub mod prelude {
     pub use crate::tulczyjew::{alpha, alpha_inv, beta, beta_inv, kappa, Pr13, Projections};
     pub use crate::{CotangentBundle, Pair, TangentBundle, Tstg, Tstsg, Ttg, Ttsg};
 }
+
+/// The README's example (the crate's page on crates.io), compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
