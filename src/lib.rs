@@ -8,3 +8,8 @@ pub use integrators;
 pub use lie_groups;
 pub use mechanics;
 pub use trivial_bundles;
+
+/// The README's Rust snippet, compiled and run as a doctest (it must work as written).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

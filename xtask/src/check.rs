@@ -77,6 +77,11 @@ pub fn check(root: &Path) -> Vec<String> {
                         ));
                     }
                 }
+                for r in &regions {
+                    if let Some(problem) = stale_source(root, &gens, &text, r) {
+                        problems.push(format!("{rel}:{}: {problem}", r.start + 1));
+                    }
+                }
                 for (f, k) in declared.iter().filter(|(f, _)| *f == rel) {
                     if !regions.iter().any(|r| &r.key == k) {
                         problems.push(format!(
@@ -112,6 +117,33 @@ pub fn check(root: &Path) -> Vec<String> {
         }
     }
     problems
+}
+
+/// For a region that shows a source file (`How::Source`), what is wrong if it no longer shows the
+/// file as it is.
+fn stale_source(
+    root: &Path,
+    gens: &[registry::Generator],
+    text: &str,
+    r: &region::Region,
+) -> Option<String> {
+    let g = gens.iter().find(|g| g.name == r.key.name)?;
+    let registry::How::Source { file, .. } = g.how else {
+        return None;
+    };
+    let shown: Vec<&str> = text
+        .lines()
+        .skip(r.start + 1)
+        .take(r.end - r.start - 1)
+        .collect();
+    match crate::generate::source_block(root, file) {
+        Err(e) => Some(format!("{file} cannot be read: {e}")),
+        Ok(block) if block.lines().eq(shown.iter().copied()) => None,
+        Ok(_) => Some(format!(
+            "region {} differs from {file} (`cargo xtask docs --only {}`)",
+            r.key, g.name
+        )),
+    }
 }
 
 /// The prose of a Markdown text, line by line: fenced code blocks blanked, inline code spans and

@@ -65,6 +65,7 @@ pub fn commands(g: &Generator) -> Vec<String> {
             .collect(),
         How::Machine(_) => vec!["lscpu; rustc --version; cat /proc/loadavg".into()],
         How::List(_) => vec!["the registry (xtask/src/registry.rs)".into()],
+        How::Source { file, .. } => vec![format!("cat {file}")],
     }
 }
 
@@ -249,8 +250,16 @@ pub fn make(ctx: &Ctx, g: &Generator) -> Result<Made> {
         }
         How::Machine(at) => made.regions.push((*at, machine(&ctx.root)?)),
         How::List(at) => made.regions.push((*at, list_table(at.file))),
+        How::Source { file, at } => made.regions.push((*at, source_block(&ctx.root, file)?)),
     }
     Ok(made)
+}
+
+/// The file's text in a ```rust block (the region `How::Source` writes and `--check` compares).
+pub fn source_block(root: &Path, file: &str) -> Result<String> {
+    let path = root.join(file);
+    let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    Ok(format!("```rust\n{}\n```\n", text.trim_end()))
 }
 
 /// The trade's command, its ladder and reference as it printed them, and its fitted orders.

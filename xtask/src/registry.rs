@@ -42,6 +42,9 @@ pub enum How {
     Machine(At),
     /// This list itself, as a table (README.md's Documentation section).
     List(At),
+    /// A source file of the repository shown whole in a ```rust block, so that a page shows the
+    /// code CI compiles and runs; `--check` fails when the block and the file differ.
+    Source { file: &'static str, at: At },
 }
 
 pub struct Trade {
@@ -115,7 +118,7 @@ impl Generator {
             How::Callgrind(tables) => tables.iter().map(|t| t.at).collect(),
             How::Tests(t) => t.parts.iter().map(|(a, _)| *a).collect(),
             How::Output(o) => vec![o.at],
-            How::Machine(a) | How::List(a) => vec![*a],
+            How::Machine(a) | How::List(a) | How::Source { at: a, .. } => vec![*a],
         }
     }
 
@@ -227,6 +230,18 @@ pub fn all() -> Vec<Generator> {
                 drop: &[],
                 out: None,
             }),
+        },
+        Generator {
+            name: "custom-system-source",
+            about: "the magnetic satellite's source, shown whole on its page",
+            takes: "instant",
+            how: How::Source {
+                file: "examples/custom_system.rs",
+                at: At {
+                    file: "docs/custom-systems.md",
+                    part: "source",
+                },
+            },
         },
         Generator {
             name: "long-run",

@@ -161,6 +161,10 @@ pub use euler_arnold::{EulerArnold, EulerArnoldEulerPoincare, EulerArnoldLiePois
 pub use euler_poincare::{EulerPoincare, TangentLiftIntegrator};
 pub use gragg_bulirsch_stoer::GraggBulirschStoer;
 pub use integrator::{integrate, Integrator, MethodInfo};
+/// The layer below, and nalgebra through it, re-exported: depending on this crate alone is
+/// enough to write a system and integrate it (`integrators::lie_groups::So3`,
+/// `integrators::nalgebra::Vector3`).
+pub use lie_groups::{self, nalgebra};
 pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};
 pub use system::System;

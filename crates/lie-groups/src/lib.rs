@@ -74,6 +74,11 @@
 mod convert;
 mod error;
 mod group;
+/// nalgebra, whose stack vectors and matrices are the fixed-size groups' elements and algebra
+/// coordinates (`So3`'s ξ is a `nalgebra::Vector3<f64>`): re-exported so that a user needs no
+/// dependency of their own at a matching version.
+pub use nalgebra;
+
 pub mod matrix;
 pub mod matrix_path;
 mod operator;

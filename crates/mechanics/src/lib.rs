@@ -52,6 +52,10 @@ pub mod exact;
 pub mod modified;
 pub mod systems;
 
+/// The layers below, and nalgebra, re-exported: depending on this crate alone is enough
+/// (`mechanics::integrators::LiePoisson`, `mechanics::lie_groups::So3`,
+/// `mechanics::nalgebra::Vector3`).
+pub use integrators::{self, lie_groups, nalgebra};
 pub use systems::{
     CoupledBodies, GeneralizedRigidBody, Gyrostat, HeavyTop, Pendulum3d, PlanarBody, Quadrotor,
     RigidBody, RigidBodySe3, Spring, UnderwaterVehicle,
