@@ -55,6 +55,7 @@
 //! # Ok::<(), integrators::IntegratorError>(())
 //! ```
 
+use crate::clock::Clock;
 use crate::{EulerPoincare, Integrator, IntegratorError, LiePoisson, System};
 use core::fmt;
 use core::str::FromStr;
@@ -438,6 +439,9 @@ impl FromStr for CompositionScheme {
 pub struct Composition<I> {
     inner: I,
     scheme: CompositionScheme,
+    /// The composite step's own time: Σ γᵢh = h only up to rounding, so the base method's time
+    /// after the sub-steps is replaced by this clock's, advanced by h ([`crate::Clock`]).
+    clock: Clock,
 }
 
 impl<I: SymmetricMethod + StateSnapshot> Composition<I> {
@@ -457,7 +461,12 @@ impl<I: SymmetricMethod + StateSnapshot> Composition<I> {
                 reason: format!("composition scheme {} is not palindromic", scheme.name()),
             });
         }
-        Ok(Self { inner, scheme })
+        let clock = Clock::at(inner.time());
+        Ok(Self {
+            inner,
+            scheme,
+            clock,
+        })
     }
 }
 
@@ -489,14 +498,18 @@ impl<I: StateSnapshot> Integrator for Composition<I> {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let saved = self.inner.snapshot();
-        let t1 = self.inner.time() + h;
+        // The base method's time may have been set from outside (a restore, a reset).
+        self.clock.set(self.inner.time());
+        let t1 = self.clock.advanced(h);
         for &gamma in &self.scheme.gammas {
             if let Err(e) = self.inner.step(gamma * h) {
                 self.inner.restore(saved)?;
                 return Err(e);
             }
         }
-        self.inner.set_time(t1)
+        self.inner.set_time(t1.now())?;
+        self.clock = t1;
+        Ok(())
     }
     fn time(&self) -> f64 {
         self.inner.time()

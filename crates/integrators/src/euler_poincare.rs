@@ -96,6 +96,7 @@
 //! and 2e-15; in increment form it reaches 1.0e-14 and 2.5e-15 (`tests/error_floor.rs`).
 
 use crate::checks::{check_state, check_theta, step_too_large};
+use crate::clock::Clock;
 use crate::compensated::two_sum;
 use crate::lie_poisson::RENORMALIZE_EVERY;
 use crate::solver::{solve, Scales};
@@ -138,7 +139,7 @@ pub struct TangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     system: S,
     map: M,
     config: SolverConfig,
-    t: f64,
+    t: Clock,
     xi: G::Algebra,
     /// The rounding error of ξ carried to the next step (compensated summation: ξ + xi_err is
     /// the sum of the increments to O(ε²)).
@@ -178,7 +179,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             system,
             map,
             config: SolverConfig::default(),
-            t: 0.0,
+            t: Clock::at(0.0),
             xi_err: G::Algebra::zeros(G::dim()),
             xi: xi0,
             g: g0,
@@ -230,7 +231,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &xi, "velocity ξ", g.as_ref())?;
-        self.t = t;
+        self.t.set(t);
         self.xi = xi;
         self.xi_err = G::Algebra::zeros(G::dim());
         self.g = g;
@@ -240,7 +241,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     }
     /// Sets the time alone (the compensation of ξ and the warm start kept).
     pub(crate) fn set_time_only(&mut self, t: f64) {
-        self.t = t;
+        self.t.set(t);
     }
     /// The system.
     pub fn system(&self) -> &S {
@@ -311,7 +312,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             .filter(|_| self.system.needs_configuration())
             .map(|gk| self.map.base_point(gk, &xi.scale(h)));
         let zeta = self
-            .field(self.t + self.theta() * h, gbar.as_ref(), &xi)
+            .field(self.t.now() + self.theta() * h, gbar.as_ref(), &xi)
             .scale(h);
         Evaluation { xi, gbar, zeta }
     }
@@ -384,7 +385,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
             // O(h²) of the solution (δ = 0 is O(h)). After six steps of this size: the
             // WarmStart extrapolation of the past increments, O(h⁷).
             let guess = self.warm.predict(h).unwrap_or_else(|| {
-                self.field(self.t, self.g.as_ref(), &self.xi)
+                self.field(self.t.now(), self.g.as_ref(), &self.xi)
                     .scale(theta * h)
             });
             // The residual's terms are rounded at ε·θ|h| (‖ξ‖² + the field's data) even where δ
@@ -397,7 +398,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                 Scales {
                     data: theta
                         * h.abs()
-                        * (xn * xn + self.data_size(self.t, self.g.as_ref(), &self.xi)),
+                        * (xn * xn + self.data_size(self.t.now(), self.g.as_ref(), &self.xi)),
                     state: xn,
                 }
             };
@@ -460,7 +461,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         self.xi = xi1;
         self.xi_err = err;
         self.g = g1;
-        self.t += h;
+        self.t.advance(h);
         self.iterations = iterations;
         self.jacobians = jacobians;
         self.unnormalized = if renormalize {
@@ -468,11 +469,12 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         } else {
             self.unnormalized + 1
         };
-        self.warm.record(h, self.t, &delta, contraction, jacobians);
+        self.warm
+            .record(h, self.t.now(), &delta, contraction, jacobians);
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> G::Algebra {
         self.system.momentum(&self.xi)

@@ -63,6 +63,7 @@
 //! forms; on SE(3), SE(2) and SO(4) against independent classical RK4 runs. No allocation per step
 //! for SO(3), SE(3), SE(2) (`tests/no_alloc.rs`).
 
+use crate::clock::Clock;
 use crate::compensated::two_sum;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
@@ -164,7 +165,7 @@ pub fn dexp_left_inv_series<G: LieGroup>(
 #[derive(Debug, Clone)]
 pub struct GraggBulirschStoer<G: LieGroup, S: System<G>> {
     system: S,
-    t: f64,
+    t: Clock,
     mu: G::Algebra,
     /// The rounding error of the last `μ + δ`, added to the next increment (TwoSum).
     mu_err: G::Algebra,
@@ -209,7 +210,7 @@ impl<G: LieGroup, S: System<G>> GraggBulirschStoer<G, S> {
         let n = G::dim();
         Ok(Self {
             system,
-            t: 0.0,
+            t: Clock::at(0.0),
             mu: mu0,
             mu_err: G::Algebra::zeros(n),
             g: g0,
@@ -300,7 +301,7 @@ impl<G: LieGroup, S: System<G>> Integrator for GraggBulirschStoer<G, S> {
         let field = LocalField {
             system: &self.system,
             h,
-            t0: self.t,
+            t0: self.t.now(),
             mu0: &self.mu,
             g0: self.g.as_ref(),
             needs_g: self.system.needs_configuration() || self.system.is_forced(),
@@ -356,11 +357,11 @@ impl<G: LieGroup, S: System<G>> Integrator for GraggBulirschStoer<G, S> {
         self.mu_err = err;
         self.mu = sum;
         self.g = g1;
-        self.t += h;
+        self.t.advance(h);
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> G::Algebra {
         self.mu.clone()
@@ -369,7 +370,7 @@ impl<G: LieGroup, S: System<G>> Integrator for GraggBulirschStoer<G, S> {
         self.system.velocity(&self.mu)
     }
     fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(&self.system, self.t, &self.mu, self.g.as_ref())
+        crate::dense_output::momentum_rate(&self.system, self.t.now(), &self.mu, self.g.as_ref())
     }
     fn configuration(&self) -> Option<&G> {
         self.g.as_ref()

@@ -134,6 +134,7 @@ pub mod adaptive;
 pub mod baselines;
 mod carried_state;
 pub mod checks;
+pub mod clock;
 mod compensated;
 pub mod compose;
 pub mod dense_output;
@@ -155,6 +156,7 @@ mod unroll;
 pub mod warm_start;
 
 pub use baselines::{QuaternionRk4, Rkmk4};
+pub use clock::Clock;
 pub use compose::{Composition, CompositionScheme, StateSnapshot, SymmetricMethod};
 pub use error::IntegratorError;
 pub use euler_arnold::{EulerArnold, EulerArnoldEulerPoincare, EulerArnoldLiePoisson};

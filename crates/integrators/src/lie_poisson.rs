@@ -79,6 +79,7 @@
 //! needed 5–6); the force's derivative is dropped (see [`crate::solver`]).
 
 use crate::checks::{check_state, check_theta, step_too_large};
+use crate::clock::Clock;
 use crate::compensated::two_sum;
 use crate::solver::{solve, Scales, Solution};
 use crate::system::force;
@@ -119,7 +120,7 @@ pub struct CotangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     system: S,
     map: M,
     config: SolverConfig,
-    t: f64,
+    t: Clock,
     mu: G::Algebra,
     /// The rounding error of μ carried to the next step (compensated summation: μ + mu_err is
     /// the sum of the increments to O(ε²)), so that |μ|² does not random-walk either.
@@ -166,7 +167,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             system,
             map,
             config: SolverConfig::default(),
-            t: 0.0,
+            t: Clock::at(0.0),
             mu_err: G::Algebra::zeros(G::dim()),
             mu: mu0,
             g: g0,
@@ -204,7 +205,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
-        self.t = t;
+        self.t.set(t);
         self.mu = mu;
         self.mu_err = G::Algebra::zeros(G::dim());
         self.g = g;
@@ -214,7 +215,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     }
     /// Sets the time alone (the compensation of μ kept).
     pub(crate) fn set_time_only(&mut self, t: f64) {
-        self.t = t;
+        self.t.set(t);
     }
     /// The system.
     pub fn system(&self) -> &S {
@@ -284,7 +285,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         } else {
             self.system.velocity(&self.mu)
         };
-        let t = self.t + self.theta() * h;
+        let t = self.t.now() + self.theta() * h;
         let mut f = self.system.external_force(t, gbar.as_ref(), &velocity);
         if let Some(fp) = force(&self.system, gbar.as_ref()) {
             f = f.add(&fp);
@@ -327,7 +328,9 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             mid = mid.axpy((1.0 - self.theta()) * h, &f);
         }
         if self.system.is_forced() {
-            let f = self.system.external_force(self.t, self.g.as_ref(), &v);
+            let f = self
+                .system
+                .external_force(self.t.now(), self.g.as_ref(), &v);
             mid = mid.axpy((1.0 - self.theta()) * h, &f);
         }
         self.system.velocity(&mid).scale(h)
@@ -444,7 +447,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         self.mu = mu1;
         self.mu_err = err;
         self.g = g1;
-        self.t += h;
+        self.t.advance(h);
         self.iterations = solution.iterations;
         self.jacobians = solution.jacobians;
         self.unnormalized = if renormalize {
@@ -454,7 +457,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         };
         self.warm.record(
             h,
-            self.t,
+            self.t.now(),
             &xi,
             solution.contraction.zip(solution.contraction_bound),
             solution.jacobians,
@@ -462,7 +465,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> G::Algebra {
         self.mu.clone()

@@ -19,6 +19,7 @@
 
 use crate::carried_state;
 use crate::checks::check_state;
+use crate::clock::Clock;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use core::cell::OnceCell;
@@ -45,7 +46,7 @@ use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 #[derive(Debug, Clone)]
 pub struct QuaternionRk4<S: System<So3>> {
     system: S,
-    t: f64,
+    t: Clock,
     pi: Vector3<f64>,
     /// The unit quaternion of the attitude, where it is reconstructed.
     q: Option<Quaternion<f64>>,
@@ -96,7 +97,7 @@ impl<S: System<So3>> QuaternionRk4<S> {
         let rotation = r0.map_or_else(OnceCell::new, OnceCell::from);
         Ok(Self {
             system,
-            t: 0.0,
+            t: Clock::at(0.0),
             pi: pi0,
             q,
             rotation,
@@ -116,7 +117,7 @@ impl<S: System<So3>> QuaternionRk4<S> {
     #[inline(never)]
     fn momentum_step(&self, h: f64) -> Vector3<f64> {
         let (pi, half) = (self.pi, 0.5 * h);
-        let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
+        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
         let v = |pi: &Vector3<f64>| self.system.velocity(pi);
         let [_, k1] = self.momentum_rate(&v, t0, None, &pi);
         let [_, k2] = self.momentum_rate(&v, tm, None, &(pi + k1 * half));
@@ -138,7 +139,7 @@ impl<S: System<So3>> QuaternionRk4<S> {
         pi: Vector3<f64>,
     ) -> (Quaternion<f64>, Vector3<f64>) {
         let half = 0.5 * h;
-        let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
+        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
         let (l1, k1) = self.rate(v, t0, &q, &pi);
         let (l2, k2) = self.rate(v, tm, &(q + l1 * half), &(pi + k1 * half));
         let (l3, k3) = self.rate(v, tm, &(q + l2 * half), &(pi + k2 * half));
@@ -244,11 +245,11 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
                 self.pi = pi1;
             }
         }
-        self.t += h;
+        self.t.advance(h);
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> Vector3<f64> {
         self.pi

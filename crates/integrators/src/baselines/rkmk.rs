@@ -38,6 +38,7 @@
 
 use crate::carried_state;
 use crate::checks::check_state;
+use crate::clock::Clock;
 use crate::lie_poisson::RENORMALIZE_EVERY;
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
@@ -64,7 +65,7 @@ use lie_groups::{LieGroup, Vector};
 #[derive(Debug, Clone)]
 pub struct Rkmk4<G: LieGroup, S: System<G>> {
     system: S,
-    t: f64,
+    t: Clock,
     mu: G::Algebra,
     g: Option<G>,
     /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
@@ -78,7 +79,7 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         Ok(Self {
             system,
-            t: 0.0,
+            t: Clock::at(0.0),
             mu: mu0,
             g: g0,
             unnormalized: 0,
@@ -121,7 +122,7 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         mu: &G::Algebra,
     ) -> (G::Algebra, G::Algebra) {
         let half = 0.5 * h;
-        let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
+        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
         let potential = self.system.needs_configuration();
         // g_i = g_k exp(Θ_i), only evaluated where a force reads it.
         let stage_g = |theta: &G::Algebra| potential.then(|| G::exp_compose(gk, theta));
@@ -166,7 +167,7 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let half = 0.5 * h;
-        let (t0, tm, t1) = (self.t, self.t + half, self.t + h);
+        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
         // μ as the last step stored it, entry by entry (crate::carried_state).
         let mu = &carried_state::read(&self.mu);
         let Some(gk) = self.g.as_ref() else {
@@ -183,7 +184,7 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
                 });
             }
             self.mu = mu1;
-            self.t += h;
+            self.t.advance(h);
             return Ok(());
         };
         // The system's shape is tested once per step, not in each stage (see
@@ -210,7 +211,7 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
         }
         self.g = Some(g1);
         self.mu = mu1;
-        self.t += h;
+        self.t.advance(h);
         self.unnormalized = if renormalize {
             0
         } else {
@@ -219,7 +220,7 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> G::Algebra {
         self.mu.clone()

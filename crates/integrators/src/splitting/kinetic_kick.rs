@@ -4,6 +4,7 @@ use super::kick::kick;
 use super::SplittingScheme;
 use super::RENORMALIZE_EVERY;
 use crate::checks::check_state;
+use crate::clock::Clock;
 use crate::compose::{StateSnapshot, SymmetricMethod};
 use crate::{Integrator, IntegratorError, MethodInfo, System};
 use lie_groups::{LieGroup, Vector};
@@ -44,7 +45,7 @@ pub struct KineticKick<G: LieGroup, S: System<G>, K: KineticFlow<G>> {
     system: S,
     kinetic: K,
     scheme: SplittingScheme,
-    t: f64,
+    t: Clock,
     mu: G::Algebra,
     g: Option<G>,
     /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
@@ -66,7 +67,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
             system,
             kinetic,
             scheme,
-            t: 0.0,
+            t: Clock::at(0.0),
             mu: mu0,
             g: g0,
             unnormalized: 0,
@@ -78,7 +79,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
-        self.t = t;
+        self.t.set(t);
         self.mu = mu;
         self.g = g;
         self.unnormalized = 0;
@@ -105,7 +106,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
         let mut g = self.g.clone();
         let (a, b) = (self.scheme.a(), self.scheme.b());
         // The kicks' time: t_k advanced by the kinetic flows (t' = 1 belongs to the kinetic part).
-        let mut t = self.t;
+        let mut t = self.t.now();
         for (i, &ai) in a.iter().enumerate() {
             kick(&self.system, t, ai * h, &mut mu, g.as_ref())?;
             if let Some(&bi) = b.get(i) {
@@ -134,7 +135,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
         }
         self.mu = mu;
         self.g = g;
-        self.t += h;
+        self.t.advance(h);
         self.unnormalized = if renormalize {
             0
         } else {
@@ -143,7 +144,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> G::Algebra {
         self.mu.clone()
@@ -207,7 +208,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> StateSnapshot for KineticKick
     /// (t, μ, g).
     type State = (f64, G::Algebra, Option<G>);
     fn snapshot(&self) -> Self::State {
-        (self.t, self.mu.clone(), self.g.clone())
+        (self.t.now(), self.mu.clone(), self.g.clone())
     }
     fn restore(&mut self, (t, mu, g): Self::State) -> Result<(), IntegratorError> {
         self.reset(t, mu, g)
@@ -216,7 +217,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> StateSnapshot for KineticKick
         if !t.is_finite() {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
-        self.t = t;
+        self.t.set(t);
         Ok(())
     }
 }

@@ -4,6 +4,7 @@ use super::kick::kick;
 use super::SplitSystem;
 use super::RENORMALIZE_EVERY;
 use crate::checks::check_state;
+use crate::clock::Clock;
 use crate::compose::{StateSnapshot, SymmetricMethod};
 use crate::{Integrator, IntegratorError, MethodInfo};
 use core::marker::PhantomData;
@@ -54,7 +55,7 @@ use lie_groups::{LieGroup, Vector};
 #[derive(Debug, Clone)]
 pub struct Splitting<G: LieGroup, S: SplitSystem<G>> {
     system: S,
-    t: f64,
+    t: Clock,
     mu: G::Algebra,
     g: Option<G>,
     /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
@@ -85,7 +86,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         Ok(Self {
             system,
-            t: 0.0,
+            t: Clock::at(0.0),
             lead_mu: mu0.clone(),
             lead_g: g0.clone(),
             lag: 0.0,
@@ -101,7 +102,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
-        self.t = t;
+        self.t.set(t);
         self.lead_mu = mu.clone();
         self.lead_g = g.clone();
         self.lag = 0.0;
@@ -159,7 +160,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
         }
         self.mu = mu;
         self.g = g;
-        self.t += h;
+        self.t.advance(h);
         self.unnormalized = if renormalize {
             0
         } else {
@@ -192,7 +193,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
             (self.mu.clone(), self.g.clone(), half)
         };
         let first = if kicked {
-            kick(system, self.t, opening, &mut mu, g.as_ref())?;
+            kick(system, self.t.now(), opening, &mut mu, g.as_ref())?;
             0
         } else {
             system.piece_flow(0, opening, &mut mu, g.as_mut());
@@ -209,14 +210,14 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
         // next step starts from the state before it (`lead_mu`, `lead_g`).
         let before = merges.then(|| (mu.clone(), g.clone()));
         if kicked {
-            kick(system, self.t + h, half, &mut mu, g.as_ref())?;
+            kick(system, self.t.now() + h, half, &mut mu, g.as_ref())?;
         } else {
             system.piece_flow(0, half, &mut mu, g.as_mut());
         }
         self.commit(h, mu, g, before)
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> G::Algebra {
         self.mu.clone()
@@ -273,7 +274,7 @@ impl<G: LieGroup, S: SplitSystem<G>> StateSnapshot for Splitting<G, S> {
     /// (t, μ, g).
     type State = (f64, G::Algebra, Option<G>);
     fn snapshot(&self) -> Self::State {
-        (self.t, self.mu.clone(), self.g.clone())
+        (self.t.now(), self.mu.clone(), self.g.clone())
     }
     fn restore(&mut self, (t, mu, g): Self::State) -> Result<(), IntegratorError> {
         self.reset(t, mu, g)
@@ -282,7 +283,7 @@ impl<G: LieGroup, S: SplitSystem<G>> StateSnapshot for Splitting<G, S> {
         if !t.is_finite() {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
-        self.t = t;
+        self.t.set(t);
         // The merged opening kick of the next step reads t: a forced system starts afresh.
         if self.system.is_forced() {
             self.lead_mu = self.mu.clone();

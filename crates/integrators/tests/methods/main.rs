@@ -32,5 +32,6 @@ mod product_groups;
 mod right_trivialized;
 mod robustness;
 mod splitting;
+mod time_exact;
 mod user_map;
 mod warm_start;
