@@ -108,6 +108,66 @@ pub trait System<G: LieGroup> {
     fn energy(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
         self.hamiltonian(mu) + g.map_or(0.0, |g| self.potential(g))
     }
+
+    // Facts about the model, for tools that choose steps and monitor invariants (`lie-sim`'s
+    // ladders and monitors; a step density for step-size control). They do not enter any step.
+
+    /// The characteristic rate ω(μ, g) ≥ 0 of the motion through (μ, g), in radians per unit of
+    /// time: the fastest of the rotation rates and the frequencies of the potential and forces, so
+    /// that a step resolves the motion when hω ≲ 1 (1/ω is the motion's time scale). `g = None`
+    /// (a run that does not reconstruct g) leaves out what depends on the configuration.
+    ///
+    /// Provided: the Euclidean norm of the body velocity's coordinates, `|ξ|₂ = |∂h/∂μ(μ)|₂`,
+    /// which bounds the fastest rotation of a body on SO(3) or SO(n) (for a velocity with linear
+    /// parts it is not a rate: a length is missing). Models override it: the angular part alone
+    /// on SE(2) and SE(3), plus the frequencies of the potential (the heavy top's pendulum
+    /// `√(m g |χ| / λ_min(𝕀))`, a satellite's orbit `√(GM / |x|³)`, a spring's `√(k/m)`);
+    /// [`crate::forces::Forced`] adds its force's ([`crate::forces::ExternalForce::characteristic_rate`]).
+    fn characteristic_rate(&self, mu: &G::Algebra, _g: Option<&G>) -> f64 {
+        euclidean_norm(&self.velocity(mu), 0..G::dim())
+    }
+    /// The rate `√(|τ|₂ / λ_min(𝕀))` at which a constant body-frame covector F (a generalized
+    /// force; τ its torque part, 𝕀 the rotational inertia it acts on) turns the body through a
+    /// radian: from rest, `θ(t) = ½ (|τ|/I) t²` reaches 1 after `√2 · √(I/|τ|)`. A torque sets
+    /// a time scale, a force alone does not (a length is missing). Provided: 0, no rotational
+    /// inertia declared; the rigid-body models override it.
+    fn torque_rate(&self, _force: &G::Algebra) -> f64 {
+        0.0
+    }
+    /// The quantities of the spatial momentum map `J = Ad*_{g⁻¹} μ` (in the basis of μ) that
+    /// the exact flow conserves, each the sum of the listed components of J; empty when none is
+    /// known to be.
+    ///
+    /// Provided: Noether's theorem for a left-invariant Hamiltonian — every component, each on
+    /// its own, when there is no potential and no external force; nothing otherwise. A model whose
+    /// potential is invariant under a subgroup lists what that symmetry keeps (the heavy top
+    /// `J₃ = e₃·RΠ`, the angular momentum about the vertical).
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        if self.has_potential() || self.is_forced() {
+            Vec::new()
+        } else {
+            (0..G::dim()).map(|i| vec![i]).collect()
+        }
+    }
+    /// What [`Self::conserved_momentum_map`] keeps when, in addition, an external force acts in
+    /// the body-frame components `pushed` of 𝔤* only (the force's
+    /// [`crate::forces::ExternalForce::acts_on`]). Provided: all of it when nothing is pushed,
+    /// nothing otherwise (the spatial image `Ad*_{g⁻¹} F` of a body force reaches, in general,
+    /// every component). A model on a product with an abelian factor overrides it: a gyrostat's
+    /// wheel torques move the wheel momenta p and leave `R Π`.
+    fn conserved_momentum_map_under(&self, pushed: &[usize]) -> Vec<Vec<usize>> {
+        if pushed.is_empty() {
+            self.conserved_momentum_map()
+        } else {
+            Vec::new()
+        }
+    }
+}
+
+/// `(Σ_{i ∈ parts} vᵢ²)^{1/2}`: the Euclidean norm of some components of v, summed in index order
+/// (the models' [`System::characteristic_rate`] read the angular part of a velocity with it).
+pub fn euclidean_norm<V: Vector>(v: &V, parts: core::ops::Range<usize>) -> f64 {
+    parts.map(|i| v.get(i) * v.get(i)).sum::<f64>().sqrt()
 }
 
 /// The trivialized force `F(g) = −T*_e L_g dV(g)`, zero when the system has no potential or no g.

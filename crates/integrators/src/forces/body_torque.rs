@@ -45,4 +45,17 @@ impl<G: LieGroup> ExternalForce<G> for BodyTorque<G> {
     fn reads_velocity(&self) -> bool {
         false
     }
+    /// `1/Δt` of the schedule's shortest gap between knots, or the spin-up rate
+    /// ([`crate::System::torque_rate`]) of its largest value, whichever is larger.
+    fn characteristic_rate<S: crate::System<G>>(
+        &self,
+        system: &S,
+        _mu: &G::Algebra,
+        _g: Option<&G>,
+    ) -> f64 {
+        let spin = super::external_force::peak_torque_rate::<G, S>(system, &self.schedule, |u| {
+            G::Algebra::from_fn(G::dim(), |i| u[i])
+        });
+        super::external_force::knot_rate(&self.schedule).max(spin)
+    }
 }

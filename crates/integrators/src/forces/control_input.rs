@@ -20,6 +20,11 @@ pub trait InputMap<G: LieGroup> {
     fn needs_configuration(&self) -> bool {
         false
     }
+    /// The components of 𝔤* some column of B may have nonzero, `None` for any (the provided
+    /// answer; [`crate::forces::ExternalForce::acts_on`]).
+    fn acts_on(&self) -> Option<Vec<usize>> {
+        None
+    }
 }
 
 /// A body-fixed input map: B constant in the body frame, `B u = Σⱼ uⱼ bⱼ` with columns
@@ -109,6 +114,14 @@ impl<G: LieGroup> InputMap<G> for BodyInputMap<G> {
             .zip(u)
             .fold(G::Algebra::zeros(G::dim()), |acc, (b, &uj)| acc.axpy(uj, b))
     }
+    /// The components where some column `bⱼ` is nonzero.
+    fn acts_on(&self) -> Option<Vec<usize>> {
+        Some(
+            (0..G::dim())
+                .filter(|&i| self.columns.iter().any(|b| b.get(i) != 0.0))
+                .collect(),
+        )
+    }
 }
 
 /// The control force `F_ext(t, g) = B(g) u(t)`: the inputs u(t) of a [`Schedule`] (constant or
@@ -167,5 +180,21 @@ impl<G: LieGroup, B: InputMap<G>> ExternalForce<G> for ControlInput<G, B> {
     }
     fn reads_velocity(&self) -> bool {
         false
+    }
+    fn acts_on(&self) -> Option<Vec<usize>> {
+        self.map.acts_on()
+    }
+    /// `1/Δt` of the schedule's shortest gap between knots, or the spin-up rate
+    /// ([`crate::System::torque_rate`]) of its largest input `B(g) u`, whichever is larger.
+    fn characteristic_rate<S: crate::System<G>>(
+        &self,
+        system: &S,
+        _mu: &G::Algebra,
+        g: Option<&G>,
+    ) -> f64 {
+        let spin = super::external_force::peak_torque_rate::<G, S>(system, &self.schedule, |u| {
+            self.map.apply(g, u)
+        });
+        super::external_force::knot_rate(&self.schedule).max(spin)
     }
 }

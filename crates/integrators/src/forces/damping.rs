@@ -55,4 +55,21 @@ impl<G: LieGroup> ExternalForce<G> for LinearDamping<G> {
     fn force(&self, _t: f64, _g: Option<&G>, xi: &G::Algebra) -> G::Algebra {
         self.d.apply(xi).neg()
     }
+    /// The relaxation rate `maxᵢ Dᵢᵢ / Mᵢᵢ`, with `Mᵢᵢ = ⟨∂l/∂ξ(eᵢ), eᵢ⟩` the diagonal of the
+    /// system's mass matrix (its Legendre map): a velocity component alone decays as
+    /// `e^{−(Dᵢᵢ/Mᵢᵢ) t}`.
+    fn characteristic_rate<S: crate::System<G>>(
+        &self,
+        system: &S,
+        _mu: &G::Algebra,
+        _g: Option<&G>,
+    ) -> f64 {
+        let n = G::dim();
+        (0..n)
+            .map(|i| {
+                let e = G::Algebra::basis(n, i);
+                self.d.apply(&e).get(i) / system.momentum(&e).get(i)
+            })
+            .fold(0.0, f64::max)
+    }
 }

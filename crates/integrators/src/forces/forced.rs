@@ -73,6 +73,34 @@ impl<G: LieGroup, S: System<G>, F: ExternalForce<G>> System<G> for Forced<S, F> 
     fn energy(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
         self.system.energy(mu, g)
     }
+    /// The larger of the system's rate and the force's
+    /// ([`ExternalForce::characteristic_rate`]).
+    fn characteristic_rate(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
+        self.system
+            .characteristic_rate(mu, g)
+            .max(self.force.characteristic_rate(&self.system, mu, g))
+    }
+    fn torque_rate(&self, force: &G::Algebra) -> f64 {
+        self.system.torque_rate(force)
+    }
+    /// What the system keeps when the force pushes where it acts
+    /// ([`System::conserved_momentum_map_under`] of [`ExternalForce::acts_on`]; nothing when the
+    /// force may act anywhere).
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        match self.force.acts_on() {
+            Some(pushed) => self.system.conserved_momentum_map_under(&pushed),
+            None => Vec::new(),
+        }
+    }
+    fn conserved_momentum_map_under(&self, pushed: &[usize]) -> Vec<Vec<usize>> {
+        match self.force.acts_on() {
+            Some(mut own) => {
+                own.extend_from_slice(pushed);
+                self.system.conserved_momentum_map_under(&own)
+            }
+            None => Vec::new(),
+        }
+    }
 }
 
 /// The kinetic pieces of the unforced system: the splittings then apply the force in their kicks

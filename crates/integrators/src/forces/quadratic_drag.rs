@@ -56,4 +56,21 @@ impl<G: LieGroup> ExternalForce<G> for QuadraticDrag<G> {
             -self.d.get(i) * x.abs() * x
         })
     }
+    /// The drag's rate at the velocity ξ = ∂h/∂μ(μ), `maxᵢ dᵢ |ξᵢ| / Mᵢᵢ` (the linear damping
+    /// it acts as there; Mᵢᵢ as for [`crate::forces::LinearDamping`]).
+    fn characteristic_rate<S: crate::System<G>>(
+        &self,
+        system: &S,
+        mu: &G::Algebra,
+        _g: Option<&G>,
+    ) -> f64 {
+        let n = G::dim();
+        let xi = system.velocity(mu);
+        (0..n)
+            .map(|i| {
+                let e = G::Algebra::basis(n, i);
+                self.d.get(i) * xi.get(i).abs() / system.momentum(&e).get(i)
+            })
+            .fold(0.0, f64::max)
+    }
 }

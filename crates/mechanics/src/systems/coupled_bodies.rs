@@ -230,6 +230,44 @@ impl<S: System<Se3>, const N: usize> System<Power<Se3, N>> for CoupledBodies<S, 
         }
         dv
     }
+    /// The largest of the bodies' own rates and every spring's frequencies: translation
+    /// `√(κ (1/mᵢ + 1/mⱼ))` (mᵢ = ⟨∂l/∂ξ(e₄), e₄⟩, body i's translational mass) and rotation
+    /// about each end, `√(κ|a|² / λ_min(𝕀))` (the body's [`System::torque_rate`] of the torque
+    /// κ|a|² a unit turn puts on it).
+    fn characteristic_rate(&self, mu: &PowerAlgebra<Se3, N>, g: Option<&Power<Se3, N>>) -> f64 {
+        let spin = (0..N)
+            .map(|k| self.bodies[k].characteristic_rate(&mu.parts[k], g.map(|g| &g.parts[k])))
+            .fold(0.0, f64::max);
+        let e4 = Vector6::new(0.0, 0.0, 0.0, 1.0, 0.0, 0.0);
+        let mass = |k: usize| self.bodies[k].momentum(&e4)[3];
+        let turn = |k: usize, stiffness: f64, a: &Vector3<f64>| {
+            let torque = Vector6::new(stiffness * a.norm_squared(), 0.0, 0.0, 0.0, 0.0, 0.0);
+            self.bodies[k].torque_rate(&torque)
+        };
+        let springs = self
+            .springs
+            .iter()
+            .map(|s| {
+                let [i, j] = s.bodies;
+                let linear = (s.stiffness * (1.0 / mass(i) + 1.0 / mass(j))).sqrt();
+                linear
+                    .max(turn(i, s.stiffness, &s.attachments[0]))
+                    .max(turn(j, s.stiffness, &s.attachments[1]))
+            })
+            .fold(0.0, f64::max);
+        spin.max(springs)
+    }
+    /// The total spatial momentum `Σ_k J_k`, component by component (components i, 6 + i, …):
+    /// the springs are invariant under moving every body together. None when a body has a
+    /// potential of its own.
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        if self.bodies.iter().any(System::has_potential) {
+            return Vec::new();
+        }
+        (0..6)
+            .map(|i| (0..N).map(|k| 6 * k + i).collect())
+            .collect()
+    }
 }
 
 impl<S: SplitSystem<Se3>, const N: usize> CoupledBodies<S, N> {

@@ -213,6 +213,27 @@ impl<const K: usize> System<GyrostatGroup<K>> for Gyrostat<K> {
     fn casimir(&self, mu: &GyrostatAlgebra<K>) -> Option<f64> {
         Some(mu.a.norm_squared())
     }
+    /// The platform's |Ω|₂ (the wheel angles are cyclic: their spin sets no step).
+    fn characteristic_rate(&self, mu: &GyrostatAlgebra<K>, _g: Option<&GyrostatGroup<K>>) -> f64 {
+        integrators::euclidean_norm(&self.velocity(mu), 0..3)
+    }
+    /// `√(|F|₂ / λ_min(𝕀))` of the locked inertia 𝕀, for a platform torque as for a wheel torque
+    /// (whose reaction turns the platform).
+    fn torque_rate(&self, force: &GyrostatAlgebra<K>) -> f64 {
+        let lambda_min = self.inertia.symmetric_eigenvalues().min();
+        (integrators::euclidean_norm(force, 0..3 + K) / lambda_min).sqrt()
+    }
+    /// `J = (RΠ, p)` splits along `SO(3) × ℝᴷ`: a body torque on the platform moves RΠ only, a
+    /// wheel torque p only (it is internal: Π, the total angular momentum, does not see it). What
+    /// a force does not push is kept.
+    fn conserved_momentum_map_under(&self, pushed: &[usize]) -> Vec<Vec<usize>> {
+        let platform = pushed.iter().any(|&i| i < 3);
+        let wheels = pushed.iter().any(|&i| i >= 3);
+        (0..3 + K)
+            .filter(|&i| if i < 3 { !platform } else { !wheels })
+            .map(|i| vec![i])
+            .collect()
+    }
 }
 
 /// The platform's rotations about the principal axes bᵢ of 𝕀_s at the relative momentum

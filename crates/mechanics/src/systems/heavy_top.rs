@@ -200,6 +200,22 @@ impl System<So3> for HeavyTop {
     fn potential_differential(&self, g: &So3) -> Vector3<f64> {
         self.mgchi.cross(&Self::vertical_in_body(g))
     }
+    /// The larger of |Ω|₂ and the pendulum's frequency `√(m g |χ| / λ_min(𝕀))` (small
+    /// oscillations of the physical pendulum about its lowest principal moment).
+    fn characteristic_rate(&self, mu: &Vector3<f64>, _g: Option<&So3>) -> f64 {
+        let lambda_min = self.inertia().symmetric_eigenvalues().min();
+        let pendulum = (self.mass * self.gravity * self.chi.norm() / lambda_min).sqrt();
+        integrators::euclidean_norm(&self.velocity(mu), 0..3).max(pendulum)
+    }
+    /// The body's ([`RigidBody`]'s).
+    fn torque_rate(&self, force: &Vector3<f64>) -> f64 {
+        self.body.torque_rate(force)
+    }
+    /// `J₃ = e₃·RΠ`, the angular momentum about the vertical: gravity −g e₃ is invariant under
+    /// rotations about e₃ (and only those, for a general χ).
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        vec![vec![2]]
+    }
 }
 
 /// The kinetic pieces of the body's splitting ([`RigidBody`]'s: an axisymmetric body and one

@@ -177,6 +177,34 @@ impl System<Se2> for PlanarBody {
         let lin = s * self.stiffness - g.rotation().inverse().rotate(&self.gravity) * self.mass;
         Vector3::new(self.stiffness * cross2(&self.attachment, &s), lin.x, lin.y)
     }
+    /// `|P|² = P_x² + P_y²` without a potential (a Casimir of 𝔰𝔢(2)*; the body frame turns P,
+    /// never its length); none with a spring or gravity, which push P.
+    fn casimir(&self, mu: &Vector3<f64>) -> Option<f64> {
+        (!self.has_potential()).then(|| mu[1] * mu[1] + mu[2] * mu[2])
+    }
+    /// The larger of |ω| and the spring's frequencies `√(k/m)` (translation) and `√(k|c|²/J)`
+    /// (rotation about the centre of mass).
+    fn characteristic_rate(&self, mu: &Vector3<f64>, _g: Option<&Se2>) -> f64 {
+        let spring = (self.stiffness / self.mass)
+            .sqrt()
+            .max((self.stiffness * self.attachment.norm_squared() / self.inertia).sqrt());
+        self.velocity(mu)[0].abs().max(spring)
+    }
+    /// `√(|τ| / J)` for the torque τ = F₁.
+    fn torque_rate(&self, force: &Vector3<f64>) -> f64 {
+        (force[0].abs() / self.inertia).sqrt()
+    }
+    /// Free: every component (provided). On a spring attached at the origin, without gravity: the
+    /// angular momentum about the origin (component 1). With gravity: none as a whole component.
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        if self.gravity != Vector2::zeros() {
+            Vec::new()
+        } else if self.stiffness != 0.0 {
+            vec![vec![0]]
+        } else {
+            (0..3).map(|i| vec![i]).collect()
+        }
+    }
 }
 
 /// Two pieces: the rotation `ξ₁ = (L/J, 0, 0)` (it turns P, never L) and the translation

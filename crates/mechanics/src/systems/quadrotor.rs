@@ -152,6 +152,24 @@ impl System<Se3> for Quadrotor {
             .copy_from(&(Self::up(g).cross_matrix() * -self.weight));
         k
     }
+    /// The body's |Ω|₂ (its inputs' rates come with them: [`integrators::forces::Forced`]).
+    fn characteristic_rate(&self, mu: &Vector6<f64>, _g: Option<&Se3>) -> f64 {
+        integrators::euclidean_norm(&self.velocity(mu), 0..3)
+    }
+    /// The body's ([`RigidBodySe3`]'s).
+    fn torque_rate(&self, force: &Vector6<f64>) -> f64 {
+        self.body.torque_rate(force)
+    }
+    /// Without gravity every component (provided); with it, as for any body in uniform gravity
+    /// along −e₃, the vertical angular momentum L₃ and the horizontal linear momentum
+    /// (components 3, 4, 5).
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        if self.has_potential() {
+            vec![vec![2], vec![3], vec![4]]
+        } else {
+            (0..6).map(|i| vec![i]).collect()
+        }
+    }
 }
 
 /// The free body's pieces ([`RigidBodySe3`]'s two); gravity and the

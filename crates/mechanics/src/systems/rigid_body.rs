@@ -132,6 +132,17 @@ impl System<So3> for RigidBody {
     fn casimir(&self, mu: &Vector3<f64>) -> Option<f64> {
         Some(mu.norm_squared())
     }
+    /// `√(|τ|₂ / λ_min(𝕀))` for the torque τ = F.
+    fn torque_rate(&self, force: &Vector3<f64>) -> f64 {
+        torque_rate(self.inertia(), force)
+    }
+}
+
+/// `√(|τ|₂ / λ_min(𝕀))`: the rate at which the torque τ turns a body of inertia 𝕀 through a
+/// radian ([`System::torque_rate`]); |τ|₂ summed in index order.
+pub(crate) fn torque_rate(inertia: &Matrix3<f64>, torque: &Vector3<f64>) -> f64 {
+    let lambda_min = inertia.symmetric_eigenvalues().min();
+    (integrators::euclidean_norm(torque, 0..3) / lambda_min).sqrt()
 }
 
 impl RigidBody {

@@ -209,6 +209,36 @@ impl System<Se3> for RigidBodySe3 {
         let grad = self.gradient_body(&b);
         join(&grad.cross(&b), &grad)
     }
+    /// |P|² for the free body (Ṗ = P × Ω keeps it; a Casimir of 𝔰𝔢(3)*); none for a satellite,
+    /// whose gravity moves P.
+    fn casimir(&self, mu: &Vector6<f64>) -> Option<f64> {
+        self.gm
+            .is_none()
+            .then(|| mu.fixed_rows::<3>(3).norm_squared())
+    }
+    /// The angular part |Ω|₂ of ξ, and for a satellite the orbital rate at the current radius,
+    /// `√(GM / |x|³)` (with g).
+    fn characteristic_rate(&self, mu: &Vector6<f64>, g: Option<&Se3>) -> f64 {
+        let spin = integrators::euclidean_norm(&self.velocity(mu), 0..3);
+        match (self.gm, g) {
+            (Some(gm), Some(g)) => spin.max((gm / g.translation().norm().powi(3)).sqrt()),
+            _ => spin,
+        }
+    }
+    /// The rotation's, for the torque part of F.
+    fn torque_rate(&self, force: &Vector6<f64>) -> f64 {
+        self.body
+            .torque_rate(&force.fixed_rows::<3>(0).into_owned())
+    }
+    /// Free: every component (provided). Satellite: the angular momentum about the centre,
+    /// `RΠ + x × RP` (components 1–3): the field is invariant under rotations about the origin.
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        if self.gm.is_some() {
+            vec![vec![0], vec![1], vec![2]]
+        } else {
+            (0..6).map(|i| vec![i]).collect()
+        }
+    }
 }
 
 /// Two pieces, the free body's ([`RigidBody`]'s `SplitSystem`: a rotation about a_p, and the

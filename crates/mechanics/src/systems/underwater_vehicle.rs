@@ -209,6 +209,15 @@ impl UnderwaterVehicle {
     pub fn is_decoupled(&self) -> bool {
         self.split.is_some()
     }
+    /// λ_min(M_ωω), the smallest rotational mass (the restoring moment's and a torque's time
+    /// scale, [`System::characteristic_rate`]).
+    fn rotational_mass_min(&self) -> f64 {
+        self.mass_matrix()
+            .fixed_view::<3, 3>(0, 0)
+            .into_owned()
+            .symmetric_eigenvalues()
+            .min()
+    }
     /// The spatial momentum `Ad*_{g⁻¹}μ = (L, p)`, `L = RΠ + x × RP`, `p = RP`: L₃, p₁, p₂ (and p₃
     /// when W = B) are conserved without drag or thrust.
     pub fn spatial_momentum(g: &Se3, mu: &Vector6<f64>) -> (Vector3<f64>, Vector3<f64>) {
@@ -274,6 +283,31 @@ impl System<Se3> for UnderwaterVehicle {
     #[inline]
     fn casimir(&self, mu: &Vector6<f64>) -> Option<f64> {
         (!self.has_potential()).then(|| mu.fixed_rows::<3>(3).norm_squared())
+    }
+    /// The larger of |Ω|₂ and the restoring pendulum's frequency
+    /// `√(|W r_G − B r_B| / λ_min(M_ωω))`.
+    fn characteristic_rate(&self, mu: &Vector6<f64>, _g: Option<&Se3>) -> f64 {
+        let lambda_min = self.rotational_mass_min();
+        let restoring = (self.moment.norm() / lambda_min).sqrt();
+        integrators::euclidean_norm(&self.velocity(mu), 0..3).max(restoring)
+    }
+    /// `√(|τ|₂ / λ_min(M_ωω))` for the torque part τ of F.
+    fn torque_rate(&self, force: &Vector6<f64>) -> f64 {
+        (integrators::euclidean_norm(force, 0..3) / self.rotational_mass_min()).sqrt()
+    }
+    /// Without restoring forces every component (Kirchhoff's body); with them the vertical
+    /// angular momentum L₃ and the horizontal linear momentum (components 3, 4, 5): the restoring
+    /// potential is invariant under rotations about e₃ and horizontal translations; also the
+    /// vertical p₃ (component 6) when the vehicle is neutrally buoyant (W = B).
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        let parts: &[usize] = if !self.has_potential() {
+            &[0, 1, 2, 3, 4, 5]
+        } else if self.weight == self.buoyancy {
+            &[2, 3, 4, 5]
+        } else {
+            &[2, 3, 4]
+        };
+        parts.iter().map(|&i| vec![i]).collect()
     }
 }
 

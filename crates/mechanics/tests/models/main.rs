@@ -6,6 +6,7 @@
 mod common;
 
 mod exact_flow;
+mod facts;
 mod modified;
 mod systems_coupled_bodies;
 mod systems_gyrostat;
