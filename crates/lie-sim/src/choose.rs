@@ -1,7 +1,7 @@
 //! `lie-sim choose`: the cheapest method and step that meets an accuracy target on the user's own
 //! scene, measured, not guessed.
 //!
-//! It runs the candidates of [`crate::trade::candidates`] breadth first over a ladder of steps
+//! It runs the candidates of [`crate::methods::candidates`] breadth first over a ladder of steps
 //! h₀, h₀/r, …, h₀/r^{L−1} (r = 2 unless `--ratio` says otherwise; the exact flow also in one step
 //! to T): every method at the coarsest step, then every method at the next, so that a budget cut
 //! stops at an equally explored ladder, not in the middle of one slow method's fine steps. A
@@ -21,11 +21,13 @@
 //! and measured error. When nothing meets the target within the budget, it says so, with the best
 //! value reached.
 
+use crate::build::build;
 use crate::error::SimError;
+use crate::invariants::relative_error;
+use crate::measure::timed_run;
+use crate::methods::{candidates, MethodSpec};
 use crate::reference::{meets, reference, Options as ReferenceOptions};
-use crate::scene::{Method, MethodSpec, Scene};
-use crate::sim::build;
-use crate::trade::{candidates, timed_run};
+use crate::scene::{steps_for, Scene};
 use std::time::{Duration, Instant};
 
 /// What is measured against the target.
@@ -121,7 +123,7 @@ pub fn choose(
     let steps = std::iter::once(scene.duration).chain(ladder.iter().copied());
     'ladder: for (level, h) in steps.enumerate() {
         for (k, m) in methods.iter().enumerate() {
-            if done[k] || (level == 0 && m.method != Method::Exact) {
+            if done[k] || (level == 0 && !m.method.row().trade.one_step) {
                 continue;
             }
             if Instant::now() > deadline {
@@ -135,7 +137,7 @@ pub fn choose(
                     continue;
                 }
             };
-            let Ok(run) = timed_run(sim.as_mut(), &scene.system, scene.duration, h) else {
+            let Ok(run) = timed_run(sim.as_mut(), scene.duration, h) else {
                 done[k] = true; // a failed step: finer steps of a failing method are not tried
                 continue;
             };
@@ -199,7 +201,7 @@ pub fn choose(
 /// fails).
 fn energy_error_every_step(scene: &Scene, method: &MethodSpec, h: f64) -> Result<f64, SimError> {
     let mut sim = build(&scene.system, method, scene.reconstruct, &scene.solver)?;
-    let n = crate::scene::steps_for(scene.duration, h);
+    let n = steps_for(scene.duration, h);
     let h_last = scene.duration - (n - 1) as f64 * h;
     let e0 = sim.energy();
     let mut worst = 0.0f64;
@@ -207,7 +209,7 @@ fn energy_error_every_step(scene: &Scene, method: &MethodSpec, h: f64) -> Result
         if sim.step(if k + 1 == n { h_last } else { h }).is_err() {
             return Ok(f64::INFINITY);
         }
-        worst = worst.max(crate::run::relative_error(sim.energy(), e0));
+        worst = worst.max(relative_error(sim.energy(), e0));
     }
     Ok(worst)
 }

@@ -14,11 +14,12 @@
 //! quadratic_drag = [0, 0, 0, 5, 20, 20]   # Fᵢ = −dᵢ|ξᵢ|ξᵢ: a number or n entries, each ≥ 0
 //! ```
 //!
-//! Which keys a system takes ([`ForceSlots::of`]) and the dimension n of its algebra (3 on SO(3),
+//! Which keys a system takes (its [`ForceSlots`], declared by its module in [`crate::systems`])
+//! and the dimension n of its algebra (3 on SO(3),
 //! 6 on SE(3)) are checked; a schedule holds its first value before `times[0]` and its last after
 //! the end. Every malformed entry is a one-line error naming the field.
 
-use crate::scene::{RawInertia, RawNumbers, System};
+use crate::fields::{FieldError, RawInertia, RawNumbers};
 use integrators::forces::{LinearDamping, QuadraticDrag, Schedule};
 use lie_groups::{Se3, So3};
 use nalgebra::{Matrix3, Matrix6, Vector6};
@@ -92,28 +93,6 @@ pub struct ForceSlots {
     pub wheels: usize,
 }
 
-impl ForceSlots {
-    /// What `system` takes, or `None` when it takes no `[forces]`.
-    pub fn of(system: &System) -> Option<Self> {
-        let (keys, dim, wheels): (&'static [&'static str], usize, usize) = match system {
-            System::FreeRigidBody(_) | System::HeavyTop(_) => (&["torque", "damping"], 3, 0),
-            System::Gyrostat(p) => (&["torque", "wheel_torque"], 3 + p.axes.len(), p.axes.len()),
-            System::UnderwaterVehicle(_) => {
-                (&["torque", "force", "damping", "quadratic_drag"], 6, 0)
-            }
-            System::Quadrotor(_) => (&["thrust", "torque", "damping", "quadratic_drag"], 6, 0),
-            _ => return None,
-        };
-        Some(Self { keys, dim, wheels })
-    }
-}
-
-/// The system kinds that take `[forces]`, for the refusal of the others.
-pub const FORCED_KINDS: &str =
-    "free-rigid-body, heavy-top, gyrostat, underwater-vehicle and quadrotor";
-
-type FieldError = (String, String);
-
 impl Forces {
     /// One line for the run's summary: which forces act.
     pub fn describe(&self) -> String {
@@ -140,15 +119,6 @@ impl Forces {
             "{} (discrete Lagrange–d'Alembert; energy and Casimir change by their work)",
             terms.join(" + ")
         )
-    }
-    /// The rate of the schedules' detail: `1 / min Δt` over the gaps between consecutive knots of
-    /// every schedule (0 for constants) — a step longer than the shortest ramp smears it.
-    pub fn schedule_rate(&self) -> f64 {
-        [&self.torque, &self.force, &self.thrust, &self.wheel_torque]
-            .into_iter()
-            .flatten()
-            .flat_map(|s| s.times().windows(2).map(|w| 1.0 / (w[1] - w[0])))
-            .fold(0.0, f64::max)
     }
     /// The damping as a 3×3 matrix (SO(3) systems).
     pub fn damping3(&self) -> Option<Matrix3<f64>> {

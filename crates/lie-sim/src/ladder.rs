@@ -1,9 +1,11 @@
 //! The steps a trade runs: chosen from the scene's time scale, or given with `--steps`.
 //!
-//! **Automatic ladder.** A characteristic rate ω of the scene ([`characteristic_rate`]): the
-//! largest of the initial body angular velocity |ξ₀| (|Ω₀| = |𝕀⁻¹Π₀| for the rigid body) and the
+//! **Automatic ladder.** A characteristic rate ω of the scene at its initial state, the model's
+//! own (`integrators::System::characteristic_rate`, through [`crate::build::characteristic_rate`]):
+//! the largest of the initial body angular velocity |ξ₀| (|Ω₀| = |𝕀⁻¹Π₀| for the rigid body), the
 //! frequencies of the potential (the heavy top's pendulum, the satellite's orbit, the planar
-//! body's spring). The ladder starts at h₀ = 1/ω (h₀ω = 1, near the stability edge of the explicit
+//! body's spring, the vehicle's righting moment, the springs between bodies) and of the forces
+//! (a schedule's shortest ramp, a torque's spin-up, damping). The ladder starts at h₀ = 1/ω (h₀ω = 1, near the stability edge of the explicit
 //! methods and where every method's error is of order one; h₀ ≤ T) and divides it by the ratio r
 //! (`--ratio`, [`DEFAULT_RATIO`] = 2: it halves) down to the step where the highest-order candidate
 //! (order [`HIGHEST_ORDER`]) is predicted to reach the reference floor over the horizon,
@@ -22,9 +24,9 @@
 //! **Explicit ladder.** `--steps 0.1,0.05,0.02`: exactly these steps, in this order; each finite,
 //! positive and at most T.
 
+use crate::build::characteristic_rate;
 use crate::error::SimError;
-use crate::scene::{Scene, System};
-use crate::sim::build;
+use crate::scene::Scene;
 
 /// The error level the automatic ladder aims its finest step at: the free-body reference (the
 /// exact flow) is good to ~1e-14, a refined reference to its tolerance, ~1e-13.
@@ -67,130 +69,10 @@ pub struct Ladder {
     pub may_trim: bool,
 }
 
-/// The Euclidean norm of the components `parts` of `v`.
-fn norm(v: &[f64], parts: std::ops::Range<usize>) -> f64 {
-    v[parts].iter().map(|x| x * x).sum::<f64>().sqrt()
-}
-
-/// ω of the module page, from the system and its initial body velocity ξ₀ (in the basis of μ):
-///
-/// - SO(3), SO(n): |ξ₀| (the Euclidean norm of its coordinates, which bounds the largest rate of
-///   rotation);
-/// - SE(3), SE(2): the angular part of ξ₀ (a linear velocity is not a rate without a length);
-/// - heavy top: also the pendulum frequency `√(m g |χ| / λ_min(𝕀))`;
-/// - satellite: also the orbital rate at the initial radius, `√(GM / |x₀|³)`;
-/// - planar body on a spring: also `√(k/m)` and `√(k|c|²/I)`;
-/// - gyrostat: the platform's |Ω₀| (the wheel angles are cyclic: their spin sets no step);
-/// - underwater vehicle: also the restoring pendulum `√(|W r_G − B r_B| / λ_min(M_ωω))` and the
-///   drag's rates `dᵢᵢ/Mᵢᵢ`;
-/// - quadrotor: also `√(τ_max / λ_min(𝕀))` for its largest scheduled torque (the rate it spins up
-///   at within a second);
-/// - coupled bodies: every body's |Ω₀| and every spring's `√(κ(1/mᵢ + 1/mⱼ))` and
-///   `√(κ|a|²/λ_min(𝕀ᵢ))` (both ends);
-/// - with `[forces]`: also `1/Δt` for the shortest gap Δt between the knots of a schedule
-///   ([`crate::forces::Forces::schedule_rate`]: a longer step smears the schedule's ramps), and for
-///   the gyrostat `√(u_max/λ_min(𝕀))` of its largest scheduled torque.
-pub fn characteristic_rate(system: &System, xi0: &[f64]) -> f64 {
-    let schedules = system.forces().map_or(0.0, |f| f.schedule_rate());
-    own_rate(system, xi0).max(schedules)
-}
-
-/// [`characteristic_rate`] without the schedules' rate.
-fn own_rate(system: &System, xi0: &[f64]) -> f64 {
-    match system {
-        System::FreeRigidBody(_) | System::GeodesicSoN(_) => norm(xi0, 0..xi0.len()),
-        System::HeavyTop(p) => {
-            let lambda_min = p.inertia.symmetric_eigenvalues().min();
-            let pendulum = (p.mass * p.gravity * p.center_of_mass.norm() / lambda_min).sqrt();
-            norm(xi0, 0..3).max(pendulum)
-        }
-        System::RigidBodySe3(p) => {
-            let orbit = if p.gravitational_parameter > 0.0 {
-                (p.gravitational_parameter / p.position.norm().powi(3)).sqrt()
-            } else {
-                0.0
-            };
-            norm(xi0, 0..3).max(orbit)
-        }
-        System::PlanarBodySe2(p) => {
-            let spring = (p.stiffness / p.mass)
-                .sqrt()
-                .max((p.stiffness * p.attachment.norm_squared() / p.inertia).sqrt());
-            xi0[0].abs().max(spring)
-        }
-        System::Gyrostat(p) => {
-            let lambda_min = p.inertia.symmetric_eigenvalues().min();
-            let torque = p.forces.as_ref().map_or(0.0, |f| {
-                [&f.torque, &f.wheel_torque]
-                    .into_iter()
-                    .flatten()
-                    .map(|s| s.max_abs())
-                    .fold(0.0, f64::max)
-            });
-            norm(xi0, 0..3).max((torque / lambda_min).sqrt())
-        }
-        System::UnderwaterVehicle(p) => {
-            let m = p.mass_matrix();
-            let lambda_min = m
-                .fixed_view::<3, 3>(0, 0)
-                .into_owned()
-                .symmetric_eigenvalues()
-                .min();
-            let moment = p.center_of_gravity * p.weight() - p.center_of_buoyancy * p.buoyancy;
-            let restoring = (moment.norm() / lambda_min).sqrt();
-            let drag = p
-                .forces
-                .as_ref()
-                .and_then(|f| f.damping6())
-                .map_or(0.0, |d| {
-                    (0..6).map(|i| d[(i, i)] / m[(i, i)]).fold(0.0, f64::max)
-                });
-            norm(xi0, 0..3).max(restoring).max(drag)
-        }
-        System::Quadrotor(p) => {
-            let lambda_min = p.inertia.symmetric_eigenvalues().min();
-            let torque = p
-                .forces
-                .as_ref()
-                .and_then(|f| f.torque.as_ref())
-                .map_or(0.0, |s| s.max_abs());
-            norm(xi0, 0..3).max((torque / lambda_min).sqrt())
-        }
-        System::CoupledBodies(p) => {
-            let spin = (0..p.bodies.len())
-                .map(|k| norm(xi0, 6 * k..6 * k + 3))
-                .fold(0.0, f64::max);
-            let lambda = |k: usize| p.bodies[k].1.symmetric_eigenvalues().min();
-            let springs = p
-                .springs
-                .iter()
-                .map(|s| {
-                    let [i, j] = s.between;
-                    let (mi, mj) = (p.bodies[i].0, p.bodies[j].0);
-                    let linear = (s.stiffness * (1.0 / mi + 1.0 / mj)).sqrt();
-                    let turn = |k: usize, a: &nalgebra::Vector3<f64>| {
-                        (s.stiffness * a.norm_squared() / lambda(k)).sqrt()
-                    };
-                    linear
-                        .max(turn(i, &s.attachments[0]))
-                        .max(turn(j, &s.attachments[1]))
-                })
-                .fold(0.0, f64::max);
-            spin.max(springs)
-        }
-    }
-}
-
 /// The automatic ladder of the module page for `scene`, successive steps `ratio` apart; `levels`
-/// replaces the computed count. ξ₀ is the scene's own integrator's initial velocity.
+/// replaces the computed count.
 pub fn automatic(scene: &Scene, levels: Option<usize>, ratio: f64) -> Result<Ladder, SimError> {
-    let sim = build(
-        &scene.system,
-        &scene.method,
-        scene.reconstruct,
-        &scene.solver,
-    )?;
-    let omega = characteristic_rate(&scene.system, &sim.velocity());
+    let omega = characteristic_rate(&scene.system, scene.reconstruct)?;
     Ok(automatic_for(
         omega,
         scene.duration,
@@ -371,11 +253,10 @@ mod tests {
             Scene::load(&path, Default::default()).unwrap()
         };
         let quad = example("quadrotor.toml");
-        let rate = characteristic_rate(&quad.system, &[0.0; 6]);
+        let rate = characteristic_rate(&quad.system, true).unwrap();
         assert!((rate - 10.0).abs() < 1e-9, "{rate}");
         let chain = example("coupled-bodies.toml");
-        let sim = build(&chain.system, &chain.method, true, &chain.solver).unwrap();
-        let rate = characteristic_rate(&chain.system, &sim.velocity());
+        let rate = characteristic_rate(&chain.system, true).unwrap();
         assert!((rate - 12f64.sqrt()).abs() < 1e-12, "{rate}");
     }
 

@@ -10,6 +10,7 @@
 //!         [--shard i/n] [--threads k]       per trajectory; shard i of n only (0-based)
 //! lie-sim merge s0.csv s1.csv … --out s.csv merge shard outputs into the full table
 //! lie-sim default-scene                     print the embedded default scene, a starting point
+//! lie-sim methods [--markdown]              the method registry: options, systems, descriptors
 //! ```
 //!
 //! The scene format is documented in [`scene`]; examples live in `examples/scenes/`.
@@ -37,11 +38,17 @@ fn show_progress() -> bool {
 }
 
 mod bounds;
+mod build;
 mod choose;
 mod error;
+mod fields;
 mod forces;
 mod invariants;
 mod ladder;
+mod listing;
+mod measure;
+mod methods;
+mod model;
 mod output;
 mod plot;
 mod reference;
@@ -49,10 +56,11 @@ mod run;
 mod scene;
 mod sim;
 mod sweep;
+mod systems;
+mod taus;
 mod trade;
-mod vehicles;
 
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use error::SimError;
 use integrators::ensemble::Shard;
 use scene::{Overrides, Scene};
@@ -247,6 +255,14 @@ enum Command {
     },
     /// Print the embedded default scene (a commented starting point for your own).
     DefaultScene,
+    /// List the methods: what each is, the options it takes, the systems it applies to; with
+    /// --markdown, the docs' tables (with what each configuration of `trade` is, as the
+    /// integrators crate reports it) and the systems.
+    Methods {
+        /// Print Markdown tables (the docs' method table).
+        #[arg(long)]
+        markdown: bool,
+    },
 }
 
 /// How the reference of `trade` and `choose` (`--metric error`) is made (see `lie-sim trade
@@ -618,7 +634,7 @@ fn cmd_trade(
     }
     say!("{}", trade::table_header());
     let bar = show_progress().then(|| {
-        let runs = trade::candidates().len() * ladder.steps.len();
+        let runs = methods::candidates().len() * ladder.steps.len();
         let b = indicatif::ProgressBar::new(runs as u64);
         if let Ok(style) = indicatif::ProgressStyle::with_template(
             "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} runs (eta {eta})",
@@ -676,12 +692,10 @@ fn cmd_trade(
         }
     }
     let mut reasons: Vec<String> = Vec::new();
-    for m in &report.inapplicable {
-        if let Some(why) = scene::inapplicable(m, &scene.system) {
-            let line = format!("not applicable: {}: {why}", m.method);
-            if !reasons.contains(&line) {
-                reasons.push(line);
-            }
+    for (m, why) in &report.inapplicable {
+        let line = format!("not applicable: {}: {why}", m.method);
+        if !reasons.contains(&line) {
+            reasons.push(line);
         }
     }
     for line in reasons {
@@ -960,7 +974,14 @@ fn cmd_merge(shards: &[PathBuf], out: &Path) -> Result<(), SimError> {
 
 fn main() -> ExitCode {
     output::install_signal_cleanup();
-    let cli = Cli::parse();
+    // The help lists the registry's methods and systems, derived from them.
+    let matches = Cli::command()
+        .after_long_help(listing::help())
+        .get_matches();
+    let cli = match Cli::from_arg_matches(&matches) {
+        Ok(cli) => cli,
+        Err(e) => e.exit(),
+    };
     QUIET.store(cli.quiet, std::sync::atomic::Ordering::Relaxed);
     let result = match cli.command {
         None => cmd_run(
@@ -1049,6 +1070,10 @@ fn main() -> ExitCode {
                 overrides,
             )
         }
+        Some(Command::Methods { markdown }) => listing::listing(markdown).map(|text| {
+            use std::io::Write as _;
+            let _ = write!(std::io::stdout(), "{text}");
+        }),
         Some(Command::DefaultScene) => {
             {
                 use std::io::Write as _;

@@ -7,7 +7,7 @@
 //!   ~1e-15 … 1e-14.
 //! - **Every other scene:** the Gragg–Bulirsch–Stoer method of order 12
 //!   ([`integrators::GraggBulirschStoer`]; it shares no discretization with any candidate) at
-//!   h₀ = min(T, 1/ω) (ω the scene's time scale, [`crate::ladder::characteristic_rate`]; the
+//!   h₀ = min(T, 1/ω) (ω the scene's time scale, [`crate::build::characteristic_rate`]; the
 //!   scene's step when ω = 0), h₀/2, h₀/4, …, every run ending its steps on the knots of the force
 //!   schedules (torque, force, thrust, wheel torques: where the force has kinks), until two
 //!   successive runs agree to the tolerance (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`]
@@ -35,12 +35,16 @@
 //! target only when its error is resolved and its error plus the floor is within the target
 //! ([`meets`]).
 
+use crate::build::{build, characteristic_rate};
 use crate::error::SimError;
-use crate::scene::{Method, MethodSpec, Scene, System, TauKind};
-use crate::sim::{build, dispatch, row_major, Boxed, Job};
-use crate::trade::{timed_run, FinalState};
+use crate::measure::{timed_run, FinalState};
+use crate::methods::{MethodId, MethodSpec};
+use crate::model::{Alg, Job, Model};
+use crate::scene::Scene;
+use crate::sim::Entries;
+use crate::systems::System;
 use integrators::{GraggBulirschStoer, Integrator, IntegratorError};
-use lie_groups::{CayleyGroup, Vector};
+use lie_groups::{LieGroup, Vector};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -160,16 +164,10 @@ pub fn reference(scene: &Scene, options: &Options) -> Result<Reference, SimError
     refined(scene, h0, data, options)
 }
 
-/// The scene's time scale ω ([`crate::ladder::characteristic_rate`] at its initial state; 0 at
+/// The scene's time scale ω ([`crate::build::characteristic_rate`] at its initial state; 0 at
 /// rest) and h₀ = min(T, 1/ω) of the module page (the scene's step when ω = 0).
 fn time_scale(scene: &Scene) -> Result<(f64, f64), SimError> {
-    let sim = build(
-        &scene.system,
-        &scene.method,
-        scene.reconstruct,
-        &scene.solver,
-    )?;
-    let omega = crate::ladder::characteristic_rate(&scene.system, &sim.velocity());
+    let omega = characteristic_rate(&scene.system, scene.reconstruct)?;
     if omega.is_finite() && omega > 0.0 {
         Ok((omega, (1.0 / omega).min(scene.duration)))
     } else {
@@ -185,14 +183,14 @@ fn exact_free_body(
     data: f64,
     tolerance: f64,
 ) -> Result<Reference, SimError> {
-    let m = MethodSpec::plain(Method::Exact, None);
+    let m = MethodSpec::plain(MethodId::Exact);
     let n = crate::scene::steps_for(scene.duration, h0).max(EXACT_MIN_STEPS);
     let mut samples = Vec::new();
     let (mut energy, mut casimir) = (f64::NAN, None);
     for steps in [1, n, n + 1, n + 2] {
         let mut sim = build(&scene.system, &m, scene.reconstruct, &scene.solver)?;
         let h = scene.duration / steps as f64;
-        samples.push(timed_run(sim.as_mut(), &scene.system, scene.duration, h)?.state);
+        samples.push(timed_run(sim.as_mut(), scene.duration, h)?.state);
         if steps == 1 {
             (energy, casimir) = (sim.energy(), sim.casimir());
         }
@@ -343,20 +341,18 @@ const DEADLINE_EVERY: u64 = 16;
 
 impl Job for GbsRun<'_> {
     type Out = Result<Outcome, (u64, f64, IntegratorError)>;
-    fn run<G, S, F>(
+    fn run<M: Model>(
         self,
-        system: S,
-        mu0: G::Algebra,
-        g0: Option<G>,
-        _make: F,
-    ) -> Result<Self::Out, IntegratorError>
-    where
-        G: CayleyGroup + Sync + 'static,
-        G::Algebra: Send + Sync,
-        S: integrators::System<G> + Clone + Sync + 'static,
-        F: Fn(S, G::Algebra, Option<G>) -> Result<Boxed<G>, IntegratorError> + Sync,
-    {
-        let mut m = GraggBulirschStoer::new(system, mu0, g0)?;
+        model: &M,
+        mu0: Alg<M::G>,
+        g0: Option<M::G>,
+    ) -> Result<Self::Out, SimError> {
+        let mut m = GraggBulirschStoer::new(model.system().clone(), mu0, g0).map_err(|e| {
+            SimError::Build {
+                what: format!("the reference (gragg-bulirsch-stoer) of {}", model.kind()),
+                message: e.to_string(),
+            }
+        })?;
         let (mut k, mut check_at) = (0u64, 0u64);
         for &(h, n) in self.grid {
             for _ in 0..n {
@@ -376,7 +372,13 @@ impl Job for GbsRun<'_> {
         }
         let state = FinalState {
             momentum: m.momentum().to_vec(),
-            group: m.configuration().map(row_major),
+            group: m.configuration().map(|g| {
+                let matrix = g.matrix();
+                let side = matrix.side();
+                let mut entries = vec![0.0; side * side];
+                matrix.write_row_major(&mut entries);
+                entries
+            }),
         };
         Ok(Ok(Outcome::Done(state, m.energy(), m.casimir())))
     }
@@ -390,12 +392,9 @@ pub const EXTRA_SAMPLES: u64 = 2;
 fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Reference, SimError> {
     let start = Instant::now();
     let breaks = breakpoints(scene);
-    // `dispatch` checks that its method applies; RKMK4 applies to every system, and the job
-    // builds its own integrator instead of the method's.
-    let any = MethodSpec::plain(Method::Rkmk4, Some(TauKind::Exp));
     let run = |grid: &[(f64, u64)], deadline: Option<Instant>, h: f64| {
         let job = GbsRun { grid, deadline };
-        match dispatch(&scene.system, &any, scene.reconstruct, &scene.solver, job)? {
+        match scene.system.dispatch(scene.reconstruct, job)? {
             Err((step, time, e)) => Err(SimError::Step {
                 step,
                 time,
@@ -547,7 +546,7 @@ pub fn from_csv(path: &Path, scene: &Scene, tolerance: f64) -> Result<Reference,
         scene.reconstruct,
         &scene.solver,
     )?;
-    let n = sim.momentum().len();
+    let n = sim.momentum_dim();
     let side = sim.group_side();
     let last = traj.rows() - 1;
     let value = |name: &str| -> Result<f64, SimError> {

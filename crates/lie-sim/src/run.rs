@@ -4,10 +4,12 @@
 //! row-major; left out when the scene does not reconstruct g), `energy`, and `casimir` where the
 //! system has one.
 
+use crate::build::build;
 use crate::error::SimError;
+use crate::invariants::relative_error;
 use crate::output::AtomicFile;
 use crate::scene::{EventSpec, Scene};
-use crate::sim::{build, Simulation};
+use crate::sim::Simulation;
 use indicatif::{ProgressBar, ProgressStyle};
 use integrators::events::find_crossing;
 use std::io::Write;
@@ -56,20 +58,10 @@ pub struct EventRecord {
 /// Relative width (in units of max(1, T)) to which event times are located.
 pub const EVENT_TOLERANCE: f64 = 1e-12;
 
-/// |x − x₀| / |x₀|, or |x − x₀| when x₀ = 0.
-pub fn relative_error(x: f64, x0: f64) -> f64 {
-    let d = (x - x0).abs();
-    if x0 == 0.0 {
-        d
-    } else {
-        d / x0.abs()
-    }
-}
-
 /// The CSV header for a simulation's columns.
 pub fn header(sim: &dyn Simulation) -> Vec<String> {
     columns(
-        sim.momentum().len(),
+        sim.momentum_dim(),
         sim.group_side(),
         sim.casimir().is_some(),
     )
@@ -110,7 +102,7 @@ impl std::fmt::Display for Cell {
     }
 }
 
-/// One CSV row of [`Simulation::row`] cells.
+/// One CSV row of cells.
 fn write_cells(w: &mut impl Write, row: &[f64]) -> std::io::Result<()> {
     for (i, x) in row.iter().enumerate() {
         if i > 0 {
@@ -119,6 +111,26 @@ fn write_cells(w: &mut impl Write, row: &[f64]) -> std::io::Result<()> {
         write!(w, "{}", Cell(*x))?;
     }
     writeln!(w)
+}
+
+/// The row at time tc of step k: the step's end `row1` itself, or interpolated into `between`.
+fn row_at<'a>(
+    sim: &dyn Simulation,
+    row1: &'a [f64],
+    between: &'a mut [f64],
+    tc: f64,
+    k: u64,
+) -> Result<&'a [f64], SimError> {
+    if tc == row1[0] {
+        Ok(row1)
+    } else {
+        sim.read_at(tc, between).map_err(|message| SimError::Step {
+            step: k,
+            time: tc,
+            message,
+        })?;
+        Ok(between)
+    }
 }
 
 /// Builds the scene's simulation and runs it, writing the CSV to `out` (atomically), after
@@ -147,7 +159,7 @@ pub fn run_scene(
     let rows = 2 + n / u128::from(scene.stride);
     let estimate = crate::bounds::Estimate {
         steps: n.saturating_mul(stages),
-        bytes: crate::bounds::Estimate::csv(rows, header(sim.as_ref()).len() as u128),
+        bytes: crate::bounds::Estimate::csv(rows, sim.columns() as u128),
     };
     estimate.check("run", allow_large)?;
     run_simulation(sim.as_mut(), scene, out, progress)
@@ -157,9 +169,14 @@ pub fn run_scene(
 ///
 /// Steps of size h, the last one shortened so that the run ends at T exactly; a row at t = 0,
 /// every `stride` steps, and at t = T — or, with `[output] times`, rows at exactly those times,
-/// interpolated between steps ([`Simulation::row_at`]). `[[events]]` crossings are located on
+/// interpolated between steps ([`Simulation::read_at`]). `[[events]]` crossings are located on
 /// the step's interpolant to [`EVENT_TOLERANCE`] × max(1, T) and returned; a `stop = true`
 /// event ends the run with a last row at its time.
+///
+/// After each step the loop reads what it needs from the state in place — the energy and the
+/// Casimir for the monitor, the whole row only when an event watches a column or a row is
+/// written — into buffers made once, and formats a row only when it writes it: a run that writes
+/// few rows costs what its steps cost.
 pub fn run_simulation(
     sim: &mut dyn Simulation,
     scene: &Scene,
@@ -199,10 +216,13 @@ pub fn run_simulation(
     let dense = scene.output_times.is_some() || !events.is_empty();
     let tolerance = EVENT_TOLERANCE * scene.duration.max(1.0);
     writeln!(w, "{}", columns.join(",")).map_err(werr)?;
+    // The row before the step, the row after it, and an interpolated row.
+    let width = columns.len();
+    let (mut row0, mut row1, mut between) = (vec![0.0; width], vec![0.0; width], vec![0.0; width]);
     let mut rows = 0u64;
     let mut next_time = 0usize;
     let times: &[f64] = scene.output_times.as_deref().unwrap_or(&[]);
-    let mut row0 = sim.row();
+    sim.read(&mut row0);
     if scene.output_times.is_none() {
         write_cells(&mut w, &row0).map_err(werr)?;
         rows += 1;
@@ -261,13 +281,29 @@ pub fn run_simulation(
         if let (Some(c0), Some(mc), Some(c)) = (c0, max_c.as_mut(), sim.casimir()) {
             *mc = mc.max(relative_error(c, c0));
         }
-        let row1 = sim.row();
+        let stride_row =
+            scene.output_times.is_none() && (since_row + 1 == scene.stride || k + 1 == n);
+        let time_row = next_time < times.len() && times[next_time] <= sim.time();
+        if events.is_empty() && !stride_row && !time_row {
+            since_row += 1;
+            if let Some(b) = &bar {
+                if k % tick == 0 {
+                    b.set_position(k);
+                }
+            }
+            continue;
+        }
+        sim.read(&mut row1);
         // events: sign changes of (column − value) over the step, located on the interpolant
         let mut step_records = Vec::new();
         for &(j, ev) in &events {
             let (v0, v1) = (row0[j] - ev.value, row1[j] - ev.value);
             if let Some(rising) = ev.direction.crossing(v0, v1) {
-                let f = |tc: f64| sim.row_at(tc).map_or(f64::NAN, |r| r[j] - ev.value);
+                let f = |tc: f64| {
+                    let mut r = vec![0.0; width];
+                    sim.read_at(tc, &mut r)
+                        .map_or(f64::NAN, |()| r[j] - ev.value)
+                };
                 let tc = find_crossing(f, (row0[0], v0), (row1[0], v1), tolerance);
                 step_records.push((
                     ev.stop,
@@ -287,27 +323,20 @@ pub fn run_simulation(
         }
         records.extend(step_records.into_iter().map(|(_, r)| r));
         let t_end = stopped_at.unwrap_or(row1[0]);
-        let row_at = |tc: f64| -> Result<Vec<f64>, SimError> {
-            if tc == row1[0] {
-                Ok(row1.clone())
-            } else {
-                sim.row_at(tc).map_err(|message| SimError::Step {
-                    step: k,
-                    time: tc,
-                    message,
-                })
-            }
-        };
         if scene.output_times.is_some() {
             while next_time < times.len() && times[next_time] <= t_end {
-                write_cells(&mut w, &row_at(times[next_time])?).map_err(werr)?;
+                write_cells(
+                    &mut w,
+                    row_at(sim, &row1, &mut between, times[next_time], k)?,
+                )
+                .map_err(werr)?;
                 rows += 1;
                 next_time += 1;
             }
         } else {
             since_row += 1;
             if stopped_at.is_some() {
-                write_cells(&mut w, &row_at(t_end)?).map_err(werr)?;
+                write_cells(&mut w, row_at(sim, &row1, &mut between, t_end, k)?).map_err(werr)?;
                 rows += 1;
             } else if since_row == scene.stride || k + 1 == n {
                 write_cells(&mut w, &row1).map_err(werr)?;
@@ -320,7 +349,7 @@ pub fn run_simulation(
                 b.set_position(k);
             }
         }
-        row0 = row1;
+        std::mem::swap(&mut row0, &mut row1);
         if stopped_at.is_some() {
             break;
         }

@@ -26,14 +26,17 @@
 //! floats in shortest round-trip form. Read it with e.g. `pandas.read_csv(path, comment="#")`.
 
 use crate::error::SimError;
+use crate::methods::spec::SolverOptions;
+use crate::methods::wrap::BuildError;
+use crate::methods::{build as build_method, MethodSpec};
+use crate::model::{Alg, Job, Model};
 use crate::output::write_atomic;
 use crate::scene::{steps_for, Scene, SweepKind, SweepSpec};
-use crate::sim::{dispatch, Boxed, Job};
 use integrators::ensemble::{
     energy_level_point, sphere_point, Ensemble, Execution, Shard, Summary,
 };
-use integrators::IntegratorError;
-use lie_groups::{CayleyGroup, Vector};
+use integrators::{IntegratorError, System as _};
+use lie_groups::Vector;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -64,29 +67,44 @@ struct SweepJob<'a> {
     steps: usize,
     shard: Shard,
     pool: Option<&'a rayon::ThreadPool>,
+    method: &'a MethodSpec,
+    solver: &'a SolverOptions,
+    /// `<kind> with <method>`, for errors.
+    what: String,
 }
 
 impl Job for SweepJob<'_> {
     type Out = SweepOutput;
-    fn run<G, S, F>(
+    fn run<M: Model>(
         self,
-        system: S,
-        mu0: G::Algebra,
-        g0: Option<G>,
-        make: F,
-    ) -> Result<SweepOutput, IntegratorError>
-    where
-        G: CayleyGroup + Sync + 'static,
-        G::Algebra: Send + Sync,
-        S: integrators::System<G> + Clone + Sync + 'static,
-        F: Fn(S, G::Algebra, Option<G>) -> Result<Boxed<G>, IntegratorError> + Sync,
-    {
-        let dim = G::dim();
+        model: &M,
+        mu0: Alg<M::G>,
+        g0: Option<M::G>,
+    ) -> Result<SweepOutput, SimError> {
+        let what = self.what.clone();
+        self.members(model, mu0, g0).map_err(|e| SimError::Build {
+            what,
+            message: e.to_string(),
+        })
+    }
+}
+
+impl SweepJob<'_> {
+    fn members<M: Model>(
+        self,
+        model: &M,
+        mu0: Alg<M::G>,
+        g0: Option<M::G>,
+    ) -> Result<SweepOutput, IntegratorError> {
+        type G<M> = <M as Model>::G;
+        let system = model.system();
+        let config = self.solver.config();
+        let dim = <G<M> as lie_groups::LieGroup>::dim();
         let (n, seed) = (self.spec.count, self.spec.seed);
         // Only this shard's members are drawn (each from (seed, index) alone), so a shard costs
         // in proportion to its size whatever N is.
         let indices = self.shard.indices(n);
-        let members: Vec<G::Algebra> = match self.spec.kind {
+        let members: Vec<Alg<G<M>>> = match self.spec.kind {
             SweepKind::MomentaOnSphere => {
                 let radius = mu0.norm();
                 if radius == 0.0 {
@@ -104,14 +122,22 @@ impl Job for SweepJob<'_> {
                 let e0 = system.hamiltonian(&mu0);
                 indices
                     .iter()
-                    .map(|&i| energy_level_point::<G, S>(&system, e0, seed, i as u64))
+                    .map(|&i| energy_level_point::<G<M>, M::S>(system, e0, seed, i as u64))
                     .collect::<Result<_, _>>()?
             }
         };
         let ensemble =
             Ensemble::new(members, self.h, self.steps)?.monitor_every(self.spec.monitor_every);
-        let build = |_i: usize, mu: &G::Algebra| make(system.clone(), mu.clone(), g0.clone());
-        let mut summaries: Vec<Summary<G::Algebra>> = match self.pool {
+        let method = self.method;
+        let build = |_i: usize, mu: &Alg<G<M>>| {
+            build_method(method, &config, model, mu.clone(), g0.clone()).map_err(|e| match e {
+                BuildError::Integrator(e) => e,
+                other => IntegratorError::InvalidParameter {
+                    reason: other.to_string(),
+                },
+            })
+        };
+        let mut summaries: Vec<Summary<Alg<G<M>>>> = match self.pool {
             None => ensemble.run_shard(Shard::all(), Execution::Sequential, &build),
             Some(pool) => {
                 pool.install(|| ensemble.run_shard(Shard::all(), Execution::Parallel, &build))
@@ -121,7 +147,7 @@ impl Job for SweepJob<'_> {
         for (summary, &index) in summaries.iter_mut().zip(&indices) {
             summary.index = index;
         }
-        let completed: Vec<&Summary<G::Algebra>> = summaries
+        let completed: Vec<&Summary<Alg<G<M>>>> = summaries
             .iter()
             .filter(|s| s.status.is_completed())
             .collect();
@@ -135,7 +161,7 @@ impl Job for SweepJob<'_> {
             }
         });
         Ok(SweepOutput {
-            header: Summary::<G::Algebra>::csv_header(dim),
+            header: Summary::<Alg<G<M>>>::csv_header(dim),
             rows: summaries.iter().map(|s| s.csv_row(dim)).collect(),
             completed: completed.len(),
             max_energy_error: completed
@@ -220,15 +246,12 @@ pub fn run(
         steps,
         shard,
         pool: pool.as_ref(),
+        method: &scene.method,
+        solver: &scene.solver,
+        what: format!("{} with {}", scene.system.kind(), scene.method),
     };
     let start = Instant::now();
-    let out = dispatch(
-        &scene.system,
-        &scene.method,
-        scene.reconstruct,
-        &scene.solver,
-        job,
-    )?;
+    let out = scene.system.dispatch(scene.reconstruct, job)?;
     Ok((out, spec, start.elapsed()))
 }
 

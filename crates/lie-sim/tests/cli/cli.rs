@@ -723,9 +723,14 @@ fn composition_scene_runs_and_writes_a_valid_csv() {
     }
 }
 
+/// A composition (or processing) needs a base the integrators crate reports symmetric — one rule,
+/// the library's `SymmetricMethod`: Euler–Poincaré θ = 0 is not, nor Lie–Poisson θ = 0 with a
+/// potential; Lie–Poisson θ = 0 without one is (θ = 0 and θ = 1 coincide), and so is the
+/// kinetic–kick.
 #[test]
-fn composition_with_theta_other_than_one_half_is_refused_naming_the_field() {
+fn composition_follows_the_librarys_symmetry_of_its_base() {
     let bad = GOOD
+        .replace("\"lie-poisson\"", "\"euler-poincare\"")
         .replace("theta = 0.5", "theta = 0.0")
         .replace("[integrator]", "[integrator]\ncomposition = \"kahan-li-6\"");
     assert_rejected(
@@ -733,6 +738,32 @@ fn composition_with_theta_other_than_one_half_is_refused_naming_the_field() {
         &bad,
         &["integrator.composition", "symmetric", "θ = 0"],
     );
+    let top = std::fs::read_to_string(scenes_dir().join("heavy-top.toml"))
+        .unwrap()
+        .replace("theta = 0.5", "theta = 0.0")
+        .replace(
+            "[integrator]",
+            "[integrator]\ncomposition = \"triple-jump-4\"",
+        );
+    assert_rejected(
+        "compose-top-theta",
+        &top,
+        &["integrator.composition", "θ = 0", "heavy-top"],
+    );
+    let lp0 = GOOD.replace("theta = 0.5", "theta = 0.0").replace(
+        "[integrator]",
+        "[integrator]\ncomposition = \"triple-jump-4\"",
+    );
+    let (c, summary) = run_text("compose-lp0", &lp0);
+    assert!(summary.contains("triple-jump-4"), "{summary}");
+    assert!(c.max_relative_drift("casimir") < 1e-13);
+    let kick = with_method(
+        "free-rigid-body.toml",
+        "kinetic-kick",
+        "composition = \"triple-jump-4\"",
+    );
+    let (_, summary) = run_text("compose-kick", &kick);
+    assert!(summary.contains("triple-jump-4"), "{summary}");
 }
 
 #[test]
@@ -1276,7 +1307,9 @@ fn processing_runs_on_symmetric_bases_and_is_refused_elsewhere() {
     assert!(q.max_relative_drift("casimir") < 1e-14);
     assert_rejected(
         "proc-theta",
-        &processed.replace("theta = 0.5", "theta = 0.0"),
+        &processed
+            .replace("\"lie-poisson\"", "\"euler-poincare\"")
+            .replace("theta = 0.5", "theta = 0.0"),
         &["integrator.processing", "symmetric base", "θ = 0"],
     );
     assert_rejected(

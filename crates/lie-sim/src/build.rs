@@ -1,0 +1,149 @@
+//! Where a scene's system and its method meet: the system's module builds its model
+//! ([`crate::systems`]), the registry builds the method on it ([`crate::methods::build`]), and
+//! the result is a [`Simulation`] — or why the method does not apply.
+
+use crate::error::SimError;
+use crate::methods::spec::SolverOptions;
+use crate::methods::wrap::BuildError;
+use crate::methods::{build as build_method, MethodSpec};
+use crate::model::{Alg, Job, Model};
+use crate::sim::{Adapter, Simulation};
+use crate::systems::{System, SystemKind};
+use integrators::System as _;
+
+/// Builds the simulation a scene names: its system with its initial state (g₀ only when
+/// `reconstruct`), advanced by `method`. A method that does not apply to the system is
+/// [`SimError::Inapplicable`], one the library does not provide for it yet
+/// [`SimError::NotYetAvailable`]; never a panic.
+pub fn build(
+    system: &System,
+    method: &MethodSpec,
+    reconstruct: bool,
+    solver: &SolverOptions,
+) -> Result<Box<dyn Simulation>, SimError> {
+    system.dispatch(
+        reconstruct,
+        Single {
+            system: system.kind(),
+            method,
+            solver,
+        },
+    )
+}
+
+/// What building `method` on `system` says before a run: whether the system has a potential (so
+/// that g must be integrated) and, when g is, whether the method builds.
+#[derive(Debug)]
+pub struct Probed {
+    /// The system's `integrators::System::has_potential`.
+    pub has_potential: bool,
+    /// The method built (and dropped), or why not. Not tried without g on a system with a
+    /// potential.
+    pub built: Result<(), BuildError>,
+}
+
+/// Builds `method` on `system` once (see [`Probed`]).
+pub fn probe(
+    system: &System,
+    method: &MethodSpec,
+    reconstruct: bool,
+    solver: &SolverOptions,
+) -> Result<Probed, SimError> {
+    system.dispatch(
+        reconstruct,
+        ProbeJob {
+            method,
+            solver,
+            reconstruct,
+        },
+    )
+}
+
+/// The scene's time scale ω at its initial state (`integrators::System::characteristic_rate`
+/// of its model; 0 at rest).
+pub fn characteristic_rate(system: &System, reconstruct: bool) -> Result<f64, SimError> {
+    system.dispatch(reconstruct, Rate)
+}
+
+/// The refusal of `method` on a system of `kind` as an error of the run.
+pub fn refusal(kind: SystemKind, method: &MethodSpec, e: BuildError) -> SimError {
+    let what = format!("{kind} with {method}");
+    match e {
+        BuildError::Missing {
+            need,
+            why,
+            unavailable: true,
+        } => SimError::NotYetAvailable {
+            what,
+            why: BuildError::reason(&need, &why),
+        },
+        BuildError::Missing { need, why, .. } => SimError::Inapplicable {
+            what,
+            why: BuildError::reason(&need, &why),
+        },
+        BuildError::NotSymmetric { message, .. } => SimError::Inapplicable { what, why: message },
+        BuildError::Integrator(e) => SimError::Build {
+            what,
+            message: e.to_string(),
+        },
+    }
+}
+
+/// The [`Job`] of [`build`]: the method on the model, with its system, as a [`Simulation`].
+struct Single<'a> {
+    system: SystemKind,
+    method: &'a MethodSpec,
+    solver: &'a SolverOptions,
+}
+
+impl Job for Single<'_> {
+    type Out = Box<dyn Simulation>;
+    fn run<M: Model>(
+        self,
+        model: &M,
+        mu0: Alg<M::G>,
+        g0: Option<M::G>,
+    ) -> Result<Self::Out, SimError> {
+        let integrator = build_method(self.method, &self.solver.config(), model, mu0, g0)
+            .map_err(|e| refusal(self.system, self.method, e))?;
+        Ok(Box::new(Adapter::new(integrator, model.system().clone())))
+    }
+}
+
+/// The [`Job`] of [`probe`].
+struct ProbeJob<'a> {
+    method: &'a MethodSpec,
+    solver: &'a SolverOptions,
+    reconstruct: bool,
+}
+
+impl Job for ProbeJob<'_> {
+    type Out = Probed;
+    fn run<M: Model>(
+        self,
+        model: &M,
+        mu0: Alg<M::G>,
+        g0: Option<M::G>,
+    ) -> Result<Probed, SimError> {
+        let has_potential = model.system().has_potential();
+        let built = if has_potential && !self.reconstruct {
+            Ok(())
+        } else {
+            build_method(self.method, &self.solver.config(), model, mu0, g0).map(drop)
+        };
+        Ok(Probed {
+            has_potential,
+            built,
+        })
+    }
+}
+
+/// The [`Job`] of [`characteristic_rate`].
+struct Rate;
+
+impl Job for Rate {
+    type Out = f64;
+    fn run<M: Model>(self, model: &M, mu0: Alg<M::G>, g0: Option<M::G>) -> Result<f64, SimError> {
+        Ok(model.system().characteristic_rate(&mu0, g0.as_ref()))
+    }
+}

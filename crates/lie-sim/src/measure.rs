@@ -1,0 +1,144 @@
+//! One measured run, as `trade`, `choose` and the reference make them: a simulation advanced to T
+//! with its stepping timed, the invariants of [`crate::invariants`] sampled between the timed
+//! intervals, and its state at T ([`FinalState`]) with the error measure between two such states.
+//!
+//! Error at T: `max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞))`, the group term
+//! only where both runs reconstruct g. Timing covers the steps and the read of the state at T
+//! (for a processed method that read applies its processor P, part of the run's cost): the
+//! invariants are sampled every [`ENERGY_SAMPLE`] steps outside the timed intervals, so that the
+//! time measures the integrator, not the bookkeeping.
+
+use crate::error::SimError;
+use crate::invariants::Monitor;
+use crate::scene::steps_for;
+use crate::sim::Simulation;
+use std::time::{Duration, Instant};
+
+/// Steps between two energy samples (and two clock reads) in a timed run.
+pub const ENERGY_SAMPLE: u64 = 8;
+
+/// The state compared at the final time.
+#[derive(Debug, Clone)]
+pub struct FinalState {
+    /// μ(T).
+    pub momentum: Vec<f64>,
+    /// g(T) row-major, if reconstructed.
+    pub group: Option<Vec<f64>>,
+}
+
+impl FinalState {
+    /// The state of a simulation.
+    pub fn of(sim: &dyn Simulation) -> Self {
+        Self {
+            momentum: sim.momentum(),
+            group: sim.group_matrix(),
+        }
+    }
+
+    /// The error of `self` against `reference` (see the module page).
+    pub fn error(&self, reference: &FinalState) -> f64 {
+        let max_abs = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let diff = |a: &[f64], b: &[f64]| {
+            a.iter()
+                .zip(b)
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+        };
+        let mu_scale = max_abs(&reference.momentum);
+        let mut e =
+            diff(&self.momentum, &reference.momentum) / if mu_scale > 0.0 { mu_scale } else { 1.0 };
+        if let (Some(g), Some(gr)) = (&self.group, &reference.group) {
+            e = e.max(diff(g, gr) / max_abs(gr).max(1.0));
+        }
+        e
+    }
+}
+
+/// One timed run.
+#[derive(Debug, Clone)]
+pub struct Timed {
+    /// The state at T.
+    pub state: FinalState,
+    /// Steps taken.
+    pub steps: u64,
+    /// Time spent in `step` (the clock is read every [`ENERGY_SAMPLE`] steps).
+    pub stepping: Duration,
+    /// Maximum relative energy error over the samples.
+    pub max_energy_error: f64,
+    /// Maximum relative Casimir error over the samples, where the system has a Casimir.
+    pub max_casimir_error: Option<f64>,
+    /// Maximum relative error of the conserved part of the spatial momentum map over the samples,
+    /// where g is reconstructed and the system keeps one ([`crate::invariants`]).
+    pub max_momentum_map_error: Option<f64>,
+}
+
+/// Runs `sim` to `duration` with step `h` (the last step shortened to land on T), sampling the
+/// invariants of [`crate::invariants`] every [`ENERGY_SAMPLE`] steps and at T, outside the timed
+/// intervals.
+pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Timed, SimError> {
+    let n = steps_for(duration, h);
+    let h_last = duration - (n - 1) as f64 * h;
+    let mut monitor = Monitor::new(sim);
+    let mut stepping = Duration::ZERO;
+    let mut k = 0u64;
+    let mut state = None;
+    while k < n {
+        let chunk_end = (k + ENERGY_SAMPLE).min(n);
+        let start = Instant::now();
+        while k < chunk_end {
+            let hk = if k + 1 == n { h_last } else { h };
+            if let Err(message) = sim.step(hk) {
+                return Err(SimError::Step {
+                    step: k,
+                    time: sim.time(),
+                    message,
+                });
+            }
+            k += 1;
+        }
+        if k == n {
+            // The state at T is part of the run's cost: for a processed method, the processor.
+            state = Some(FinalState::of(sim));
+        }
+        stepping += start.elapsed();
+        let e = monitor.sample(sim);
+        if !e.is_finite() {
+            if let Some(message) = sim.read_error() {
+                return Err(SimError::Step {
+                    step: k - 1,
+                    time: sim.time(),
+                    message: format!("reading the state: {message}"),
+                });
+            }
+            return Err(SimError::NonFinite {
+                step: k - 1,
+                time: sim.time(),
+            });
+        }
+    }
+    Ok(Timed {
+        state: state.unwrap_or_else(|| FinalState::of(sim)),
+        steps: n,
+        stepping,
+        max_energy_error: monitor.energy,
+        max_casimir_error: monitor.casimir,
+        max_momentum_map_error: monitor.momentum_map,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn error_is_relative_in_momentum_and_absolute_below_one_in_the_group() {
+        let r = FinalState {
+            momentum: vec![2.0, 0.0],
+            group: Some(vec![0.5]),
+        };
+        let x = FinalState {
+            momentum: vec![2.0, 0.2],
+            group: Some(vec![0.5 + 0.3]),
+        };
+        assert!((x.error(&r) - 0.3).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,87 @@
+//! What a method's row in the registry declares: its name, the options it takes, what `trade`
+//! runs of it, and how it is drawn.
+
+use super::families::Family;
+use super::options::Options;
+use crate::plot::Marker;
+use crate::taus::TauKind;
+
+/// Which τ a method takes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TauRule {
+    /// None (the method composes exact flows, or is not built on a retraction).
+    None,
+    /// Any of [`TauKind::ALL`], named in the scene.
+    Any,
+    /// This one only (the default when the scene names none).
+    Only(TauKind),
+}
+
+/// How a method steps. Every method today takes a fixed step h; error-controlled methods will take
+/// a tolerance (rtol, atol) instead.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stepping {
+    /// A fixed step h (`integrator.step`).
+    Fixed,
+}
+
+/// The options a method takes in `[integrator]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Takes {
+    /// `tau`.
+    pub tau: TauRule,
+    /// `theta`, θ ∈ [0, 1] of the discretization map.
+    pub theta: bool,
+    /// `splitting`: the method's coefficients (the Strang and Blanes–Moan schemes).
+    pub coefficients: bool,
+    /// `modified` and `order`: the free rigid body's modified Hamiltonian.
+    pub modified: bool,
+    /// `composition` and `processing` around it (when the built method is symmetric).
+    pub wrappers: bool,
+    /// How it steps.
+    pub stepping: Stepping,
+}
+
+/// Which configurations of a method `trade` (and `choose`) run, expanded by [`candidates`] over
+/// the τ the method takes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Trade {
+    /// θ values, for a method that takes θ.
+    pub thetas: &'static [f64],
+    /// Compositions of the symmetric configuration (θ = ½ where the method takes θ).
+    pub compositions: &'static [&'static str],
+    /// Modified Hamiltonians, as (θ, order).
+    pub modified: &'static [(f64, u32)],
+    /// Every built-in processing scheme around the symmetric configuration.
+    pub processing: bool,
+    /// Run once in one step to T (an exact flow: its error does not depend on h, nor its cost
+    /// per step).
+    pub one_step: bool,
+}
+
+/// One method of the registry (see the module page).
+#[derive(Debug)]
+pub struct Row {
+    /// The name in scene files (`method = "…"`).
+    pub name: &'static str,
+    /// What it is, in one line with its source.
+    pub summary: &'static str,
+    /// The options it takes.
+    pub takes: Takes,
+    /// What `trade` runs of it.
+    pub trade: Trade,
+    /// Its family in the plot, for a configuration that is not processed (processed methods are
+    /// [`families::PROCESSED`]).
+    pub family: fn(&Options) -> &'static Family,
+    /// Drawn dashed with hollow markers, as the second of a pair (kinetic–kick beside splitting,
+    /// rkmk4 beside rk4), as τ = cayley is beside τ = exp.
+    pub second: bool,
+    /// Its marker when neither θ nor a scheme sets one (the exact flow's ◆).
+    pub marker: Option<Marker>,
+}
+
+/// The θ values `trade` sweeps for a method that takes θ.
+pub const THETAS: &[f64] = &[0.0, 0.5, 1.0];
+
+/// The symmetric θ: what compositions and processing wrap, for a method that takes θ.
+pub const SYMMETRIC_THETA: f64 = 0.5;
