@@ -43,6 +43,8 @@ mod choose;
 mod error;
 mod fields;
 mod forces;
+#[cfg(test)]
+mod harness;
 mod invariants;
 mod ladder;
 mod listing;
