@@ -6,6 +6,7 @@ mod common;
 mod choose;
 mod cli;
 mod dense_output;
+mod imports;
 mod outputs;
 mod reference;
 mod trade;
