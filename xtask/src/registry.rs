@@ -209,6 +209,31 @@ pub fn all() -> Vec<Generator> {
             }),
         },
         Generator {
+            name: "methods",
+            about: "`lie-sim methods --markdown`: the method registry, each configuration's \
+                    MethodInfo on the example scenes, and the systems",
+            takes: "1 s",
+            how: How::Output(Output {
+                runs: &[&[
+                    "run",
+                    "--release",
+                    "-q",
+                    "-p",
+                    "lie-sim",
+                    "--",
+                    "methods",
+                    "--markdown",
+                ]],
+                at: At {
+                    file: "docs/choosing.md",
+                    part: "methods",
+                },
+                markdown: true,
+                drop: &[],
+                out: None,
+            }),
+        },
+        Generator {
             name: "custom-system",
             about: "the magnetic satellite's derivative check and run",
             takes: "1 s",

@@ -17,14 +17,15 @@ use crate::systems::SystemKind;
 use crate::taus::TauKind;
 use std::fmt::Write as _;
 
-/// The options a method takes, as a phrase: `τ (exp | cayley), θ, composition, processing`.
+/// The options a method takes, as a phrase: `τ (exp or cayley), θ, composition, processing`
+/// (no `|`: the phrase is also a Markdown table cell).
 pub fn takes(m: MethodId) -> String {
     let t = m.row().takes;
     let taus: Vec<&str> = TauKind::ALL.iter().map(|t| t.name()).collect();
     let mut v: Vec<String> = Vec::new();
     match t.tau {
         TauRule::None => {}
-        TauRule::Any => v.push(format!("τ ({})", taus.join(" | "))),
+        TauRule::Any => v.push(format!("τ ({})", taus.join(" or "))),
         TauRule::Only(only) => v.push(format!("τ = {only} only")),
     }
     if t.theta {
