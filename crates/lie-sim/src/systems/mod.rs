@@ -82,6 +82,9 @@ macro_rules! systems {
         const NAMES: &[&str] = &[$(<$module::$ty as SceneSystem>::KIND),*];
 
         /// A checked system with its initial state.
+        // One per scene, dispatched once to build the model: the size of its largest variant
+        // costs nothing.
+        #[allow(clippy::large_enum_variant)]
         #[derive(Debug, Clone, PartialEq)]
         pub enum System {
             $(

@@ -219,11 +219,14 @@ pub type Se3Forces = (
     ),
 );
 
+/// A system's maker of the thrust input from the `thrust` key's schedule.
+pub type ThrustMaker = fn(Schedule) -> Result<ControlInput<Se3>, IntegratorError>;
+
 /// The checked `[forces]` as the integrators' forces on SE(3); `thrust` is the system's thrust
 /// maker for the `thrust` key.
 pub fn se3_forces(
     f: &Forces,
-    thrust: Option<fn(Schedule) -> Result<ControlInput<Se3>, IntegratorError>>,
+    thrust: Option<ThrustMaker>,
 ) -> Result<Se3Forces, IntegratorError> {
     let input = |first: usize, count: usize, s: &Schedule| {
         ControlInput::new(BodyInputMap::<Se3>::components(first, count)?, s.clone())
