@@ -9,9 +9,16 @@
 //! - sn, cn, dn by the descending Landen / AGM transformation and Bulirsch's ascending
 //!   recurrence (DLMF 22.20(ii); Bulirsch 1965).
 //!
-//! The modulus is passed as k² and the complementary k'² = 1 − k² separately, so that callers
+//! - [`Modulus`]: sn, cn, dn and Legendre's third integral at a phase kept as u = nK + w,
+//!   |w| ≤ K/2 ([`QuarterPhase`]), shifted by quarter periods (DLMF 22.4.3) so that the values near
+//!   the zeros of cn and dn keep their relative accuracy, and for k' < 2⁻⁶⁰ their k = 1 limits
+//!   (DLMF 22.10.8–10, 19.12.1) from ln k', so that k'² below the double range and k' = 0 (K = ∞)
+//!   cost no range.
+//!
+//! The modulus is passed as the complementary k'² = 1 − k² (or its logarithm), so that callers
 //! near k = 1 (the separatrix of the rigid body) keep k'² to full relative accuracy. Checked
-//! against mpmath at 30 digits in `tests/exact_flow.rs`.
+//! against mpmath at 40 digits in `tests/models/exact_flow.rs` (the [`Modulus`] functions relative to
+//! themselves near every zero, to 4 + 2|w| ulps: their conditioning in w).
 
 use core::f64::consts::FRAC_PI_2;
 
@@ -185,4 +192,388 @@ pub fn incomplete_f_and_pi(n: f64, s: f64, c: f64, delta2: f64) -> (f64, f64) {
 /// The complete Π(n, k) = Π(n; π/2, k), from k'².
 pub fn complete_pi(n: f64, kc2: f64) -> f64 {
     carlson_rf(0.0, kc2, 1.0) + n / 3.0 * carlson_rj(0.0, kc2, 1.0, 1.0 - n)
+}
+
+/// Below this k' the Jacobi functions of a quarter-period-reduced argument |w| ≤ K/2 are their
+/// k = 1 limits to a relative O(k') (DLMF 22.10.8–10: the corrections are
+/// (k'²/4)(sinh w cosh w ± w)·…, at most k'/4 relative where e^{2|w|} ≤ e^K = 4/k'), and
+/// K = ln(4/k') to O(k'² ln k') (DLMF 19.12.1): 2⁻⁶⁰ leaves both below 2⁻⁶².
+const ASYMPTOTIC_KC: f64 = 8.673_617_379_884_035e-19; // 2⁻⁶⁰
+
+/// Below this k' its products with sinh w, cosh w (w ≤ K/2) are taken through logarithms: k'
+/// itself may have underflowed (a state 10⁻¹⁶⁰ from the middle axis has k' ≈ 10⁻³²⁰).
+const TINY_KC: f64 = 1e-290;
+
+/// A phase u = nK + w of the Jacobi functions, reduced to the nearest multiple n of the quarter
+/// period K (|w| ≤ K/2 up to rounding; n = 0 and w = u when K = ∞).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct QuarterPhase {
+    /// The number of quarter periods (an integer, exact below 2⁵³).
+    pub n: f64,
+    /// The remainder.
+    pub w: f64,
+}
+
+impl QuarterPhase {
+    /// n mod 4 (n is an integer below 2⁵³ in magnitude: the cast is exact).
+    #[inline]
+    pub fn quadrant(&self) -> u8 {
+        ((self.n as i64) & 3) as u8
+    }
+
+    /// Whether n is odd (u nearer a zero of cn than of sn).
+    #[inline]
+    pub fn is_odd(&self) -> bool {
+        self.quadrant() & 1 == 1
+    }
+}
+
+/// The Jacobi functions at a [`QuarterPhase`]: (sn, cn, dn) of u = nK + w, and the pieces of the
+/// reduced argument that the integrals need: S = sn w, C = cn w, D = dn w, and k'S/C.
+#[derive(Debug, Clone, Copy)]
+pub struct Jacobi {
+    /// sn u.
+    pub sn: f64,
+    /// cn u.
+    pub cn: f64,
+    /// dn u.
+    pub dn: f64,
+    /// sn w.
+    pub s: f64,
+    /// cn w ≥ 0 (0 only where it underflows, asymptotically).
+    pub c: f64,
+    /// dn w.
+    pub d: f64,
+    /// k' sn w / cn w (= k' sinh w as k' → 0).
+    pub ksc: f64,
+}
+
+/// The modulus of the Jacobi functions, given by k'² to full relative accuracy (so that k near 1,
+/// the separatrix of the rigid body, keeps its digits), with the quarter period K, evaluating
+/// sn, cn, dn and the integrals with relative accuracy in every quarter of the period.
+///
+/// The phase is kept as u = nK + w with |w| ≤ K/2 ([`QuarterPhase`]), and the functions of u come
+/// from those of w by the quarter-period shift (DLMF 22.4.3, Table 22.4.3):
+///
+/// ```text
+/// n even:  (sn, cn, dn)(u) = (±S, ±C, D),       n odd:  (sn, cn, dn)(u) = (±C/D, ∓k'S/D, k'/D),
+/// ```
+///
+/// S, C, D = sn, cn, dn of w: on |w| ≤ K/2, C and D stay above √(k'/(1+k')) and S is small only
+/// with w itself, so the small values near the zeros of sn, cn and dn (S, k'S/D, k'/D) keep
+/// their relative accuracy, where evaluating at u itself leaves them the absolute error of u.
+///
+/// For k' ≥ 2⁻⁶⁰, S, C, D by Bulirsch's method ([`sn_cn_dn`]) and K by the AGM; below, the k = 1
+/// limits (S, C, D) = (tanh w, sech w, sech w), K = ln 4 − ln k', with ln k' carried so that
+/// k'² below the double range (states within 10⁻¹⁵⁰ of the middle axis) still has its period.
+/// k' = 0 (the separatrix) is K = ∞: u never wraps.
+#[derive(Debug, Clone, Copy)]
+pub struct Modulus {
+    kc2: f64,
+    kc: f64,
+    ln_kc: f64,
+    sqrt_kc: f64,
+    quarter: f64,
+    asymptotic: bool,
+}
+
+impl Modulus {
+    /// The modulus with k'² = `kc2` ∈ [0, 1] (clamped).
+    pub fn new(kc2: f64) -> Self {
+        let kc2 = kc2.clamp(0.0, 1.0);
+        if kc2 < ASYMPTOTIC_KC * ASYMPTOTIC_KC {
+            return Self::from_ln_kc(0.5 * kc2.ln());
+        }
+        let kc = kc2.sqrt();
+        Self {
+            kc2,
+            kc,
+            // Read only asymptotically.
+            ln_kc: f64::NAN,
+            sqrt_kc: kc.sqrt(),
+            quarter: complete_k(kc2),
+            asymptotic: false,
+        }
+    }
+
+    /// The modulus with ln k' = `ln_kc` (−∞ for k' = 0, the separatrix), for k' that k'² could
+    /// not hold; above 2⁻⁶⁰ the same as [`Modulus::new`].
+    pub fn from_ln_kc(ln_kc: f64) -> Self {
+        let kc = ln_kc.exp();
+        if kc >= ASYMPTOTIC_KC {
+            return Self::new(kc * kc);
+        }
+        Self {
+            kc2: kc * kc,
+            kc,
+            ln_kc,
+            sqrt_kc: (0.5 * ln_kc).exp(),
+            quarter: core::f64::consts::LN_2 * 2.0 - ln_kc,
+            asymptotic: true,
+        }
+    }
+
+    /// k'² (0 when it underflows).
+    pub fn kc2(&self) -> f64 {
+        self.kc2
+    }
+
+    /// k² = 1 − k'².
+    pub fn k2(&self) -> f64 {
+        1.0 - self.kc2
+    }
+
+    /// The quarter period K(k) (∞ for k = 1).
+    pub fn quarter_period(&self) -> f64 {
+        self.quarter
+    }
+
+    /// Whether the functions are the k = 1 limits (k' < 2⁻⁶⁰; see the type's page).
+    pub fn is_asymptotic(&self) -> bool {
+        self.asymptotic
+    }
+
+    /// u + du, reduced again to the nearest quarter period.
+    pub fn advance(&self, phase: QuarterPhase, du: f64) -> QuarterPhase {
+        let x = phase.w + du;
+        let m = (x / self.quarter).round();
+        if m == 0.0 || m.is_nan() {
+            return QuarterPhase { n: phase.n, w: x };
+        }
+        QuarterPhase {
+            n: phase.n + m,
+            w: x - m * self.quarter,
+        }
+    }
+
+    /// k'·sinh|w| and k'·cosh w without overflow or the underflow of k'.
+    fn kc_sinh_cosh(&self, w: f64) -> (f64, f64) {
+        let a = w.abs();
+        if self.kc >= TINY_KC {
+            (self.kc * a.sinh(), self.kc * a.cosh())
+        } else {
+            // ln sinh a = a − ln 2 + ln(1 − e^{−2a}), ln cosh a = a − ln 2 + ln(1 + e^{−2a}).
+            let e = (-2.0 * a).exp();
+            let base = self.ln_kc + a - core::f64::consts::LN_2;
+            (
+                (base + (-(-2.0 * a).exp_m1()).ln()).exp(),
+                (base + e.ln_1p()).exp(),
+            )
+        }
+    }
+
+    /// The Jacobi functions at u = nK + w.
+    pub fn jacobi(&self, phase: QuarterPhase) -> Jacobi {
+        let w = phase.w;
+        let quadrant = phase.quadrant();
+        let odd = quadrant & 1 == 1;
+        let sign = if quadrant < 2 { 1.0 } else { -1.0 };
+        if self.asymptotic {
+            let (s, c) = (w.tanh(), 1.0 / w.cosh());
+            let (ks, kch) = if odd {
+                self.kc_sinh_cosh(w)
+            } else {
+                (0.0, 0.0)
+            };
+            let ksc = ks.copysign(w);
+            let (sn, cn, dn) = if odd {
+                (sign, -sign * ksc, kch)
+            } else {
+                (sign * s, sign * c, c)
+            };
+            return Jacobi {
+                sn,
+                cn,
+                dn,
+                s,
+                c,
+                d: c,
+                ksc,
+            };
+        }
+        let (s, c, _) = sn_cn_dn(w.abs(), self.kc2);
+        let s = s.copysign(w);
+        // dn from (S, C) (Δ² = C² + k'²S², a sum of positive terms): sn² + cn² = 1 and
+        // dn² = cn² + k'² sn² hold to rounding in every quarter.
+        let d = (c * c + self.kc2 * s * s).sqrt();
+        let ksc = self.kc * s / c;
+        let (sn, cn, dn) = if odd {
+            (sign * c / d, -sign * self.kc * s / d, self.kc / d)
+        } else {
+            (sign * s, sign * c, d)
+        };
+        Jacobi {
+            sn,
+            cn,
+            dn,
+            s,
+            c,
+            d,
+            ksc,
+        }
+    }
+
+    /// The phase u (one of its values mod 4K, the one with |u| ≤ 2K) of the amplitude φ = am u
+    /// given by (sin φ, cos φ) (not necessarily normalized), with the Jacobi functions of its
+    /// reduced argument w and R_F(C², D², 1) (NaN when asymptotic): the inverse of `jacobi`,
+    /// by F(φ, k) = sin φ·R_F(cos²φ, Δ², 1) (DLMF 19.25.5) near even quarters and by the
+    /// complementary amplitude near odd ones (sn(K − v) = cd v: v = F(φ*, k) with
+    /// sin φ* = cos φ/Δ, cos φ* = k' sin φ/Δ), each evaluated where its sine is the smaller, so
+    /// that w has the relative accuracy of the input's small component.
+    pub fn phase_of(&self, sin_phi: f64, cos_phi: f64) -> (QuarterPhase, Jacobi, f64) {
+        let big = sin_phi.abs().max(cos_phi.abs());
+        let (s, c) = (sin_phi / big, cos_phi / big);
+        let h = (s * s + c * c).sqrt();
+        let (s, c) = (s / h, c / h);
+        // Reduce φ to [−π/2, π/2] (cos φ ≥ 0) by am(u + 2Kj) = am u + jπ.
+        let (j, s, c) = if c >= 0.0 {
+            (0.0, s, c)
+        } else if s >= 0.0 {
+            (1.0, -s, -c)
+        } else {
+            (-1.0, -s, -c)
+        };
+        // |w| ≤ K/2 about 2jK iff tan²φ ≤ 1/k' (sn²/cn² = 1/k' at K/2).
+        let even = c >= self.sqrt_kc * s.abs();
+        let nan = f64::NAN;
+        if even {
+            let phase = |w| QuarterPhase { n: 2.0 * j, w };
+            if self.asymptotic {
+                // sinh w = S/C.
+                let w = asinh_ratio(s, c);
+                let jac = self.jacobi(phase(w));
+                return (phase(w), Jacobi { s, c, d: c, ..jac }, nan);
+            }
+            let d2 = c * c + self.kc2 * s * s;
+            let rf = carlson_rf(c * c, d2, 1.0);
+            let w = s * rf;
+            let jac = Jacobi {
+                sn: 0.0,
+                cn: 0.0,
+                dn: 0.0,
+                s,
+                c,
+                d: d2.sqrt(),
+                ksc: self.kc * s / c,
+            };
+            return (phase(w), jac, rf);
+        }
+        // Near the odd quarter (2j ± 1)K: u = (2j + 1)K − v for s > 0, (2j − 1)K + v for s < 0.
+        let side = if s > 0.0 { 1.0 } else { -1.0 };
+        let phase = |v: f64| QuarterPhase {
+            n: 2.0 * j + side,
+            w: -side * v,
+        };
+        // k'·sn w/cn w = −side·cos φ/|sin φ|: exact from the input.
+        let ksc = -side * c / s.abs();
+        if self.asymptotic {
+            // k' sinh v = cos φ/|sin φ|.
+            let v = if self.kc >= TINY_KC {
+                (c / (self.kc * s.abs())).asinh()
+            } else if c == 0.0 {
+                0.0
+            } else {
+                let y = c.ln() - s.abs().ln() - self.ln_kc;
+                if y > 20.0 {
+                    y + core::f64::consts::LN_2
+                } else {
+                    y.exp().asinh()
+                }
+            };
+            let jac = self.jacobi(phase(v));
+            return (phase(v), Jacobi { ksc, ..jac }, nan);
+        }
+        let d2 = c * c + self.kc2 * s * s;
+        let d = d2.sqrt();
+        let rf = carlson_rf(self.kc2 * s * s, self.kc2, d2);
+        let v = c * rf;
+        let jac = Jacobi {
+            sn: 0.0,
+            cn: 0.0,
+            dn: 0.0,
+            s: side * -c / d,
+            c: self.kc * s.abs() / d,
+            d: self.kc / d,
+            ksc,
+        };
+        // R_F(C², D², 1) = R_F(k'²s²/Δ², k'²/Δ², 1) = Δ·R_F(k'²s², k'², Δ²) (homogeneity).
+        (phase(v), jac, d * rf)
+    }
+
+    /// Legendre's third integral Λ(u) = Π(−β; am u, k) = ∫₀^u dv/(1 + β sn²v) (β > 0), continued
+    /// in u = nK + w as
+    ///
+    /// ```text
+    /// Λ(u) = c·u + n·L + B(n, w),   c = third_kind_slope, L = third_kind_quarter, B = third_kind_part,
+    /// ```
+    ///
+    /// so that a change of u needs only the changes of n and of the bounded B (and c·Δu: no
+    /// difference of two large values). `rf` = R_F(C², D², 1) if known (else NaN).
+    ///
+    /// For k' ≥ 2⁻⁶⁰, c = 0, L = Λ(K) and B is the integral over w: even n,
+    /// Λ(w) = S·R_F(C², D², 1) − (β/3) S³ R_J(C², D², 1, 1 + βS²) (DLMF 19.25.14); odd n,
+    /// ∫₀^w dv/(1 + β cd²v) = [k²w + βk'² Π(ν; am w, k)/(1 + β)]/(k² + β) with
+    /// ν = (k² + β)/(1 + β) (the integrand is (1 − k²sn²)/((1 + β)(1 − ν sn²))). Asymptotically
+    /// (sn w = tanh w, cd w = 1): c = 1/(1 + β), L = √β atan √β/(1 + β) and
+    /// B = √β atan(√β tanh w)/(1 + β) for even n, 0 for odd — on the separatrix (K = ∞, n fixed)
+    /// Λ = (u + √β atan(√β tanh u))/(1 + β) for every u.
+    pub fn third_kind_part(&self, beta: f64, phase: QuarterPhase, jac: &Jacobi, rf: f64) -> f64 {
+        let odd = phase.is_odd();
+        let w = phase.w;
+        if self.asymptotic {
+            let sb = beta.sqrt();
+            return if odd {
+                0.0
+            } else {
+                sb * (sb * jac.s).atan() / (1.0 + beta)
+            };
+        }
+        let (s, c2, d2) = (jac.s, jac.c * jac.c, jac.d * jac.d);
+        let rf = if rf.is_nan() {
+            carlson_rf(c2, d2, 1.0)
+        } else {
+            rf
+        };
+        let s3 = s * s * s;
+        if odd {
+            let k2 = self.k2();
+            let nu = (k2 + beta) / (1.0 + beta);
+            // 1 − νS² = C² + k'²S²/(1 + β): no cancellation as ν → 1.
+            let p = c2 + self.kc2 * s * s / (1.0 + beta);
+            let pi_nu = s * rf + nu / 3.0 * s3 * carlson_rj(c2, d2, 1.0, p);
+            (k2 * w + beta * self.kc2 * pi_nu / (1.0 + beta)) / (k2 + beta)
+        } else {
+            s * rf - beta / 3.0 * s3 * carlson_rj(c2, d2, 1.0, 1.0 + beta * s * s)
+        }
+    }
+
+    /// L of [`Modulus::third_kind_part`]: Λ(K) = Π(−β, k) = K − (β/3) R_J(0, k'², 1, 1 + β)
+    /// (DLMF 19.25.2), asymptotically √β atan √β/(1 + β).
+    pub fn third_kind_quarter(&self, beta: f64) -> f64 {
+        if self.asymptotic {
+            let sb = beta.sqrt();
+            return sb * sb.atan() / (1.0 + beta);
+        }
+        self.quarter - beta / 3.0 * carlson_rj(0.0, self.kc2, 1.0, 1.0 + beta)
+    }
+
+    /// c of [`Modulus::third_kind_part`]: 0, asymptotically 1/(1 + β).
+    pub fn third_kind_slope(&self, beta: f64) -> f64 {
+        if self.asymptotic {
+            1.0 / (1.0 + beta)
+        } else {
+            0.0
+        }
+    }
+}
+
+/// asinh(s/c) for c > 0, also where s/c overflows.
+fn asinh_ratio(s: f64, c: f64) -> f64 {
+    if c >= s.abs() * 1e-150 {
+        (s / c).asinh()
+    } else {
+        // asinh x = ln 2x for x > 10⁸ to rounding; c = 0 (an underflowed cosine) as the
+        // smallest subnormal, so that w stays finite.
+        (core::f64::consts::LN_2 + s.abs().ln() - c.max(f64::from_bits(1)).ln()).copysign(s)
+    }
 }

@@ -1,10 +1,10 @@
-"""Reference solutions of the free rigid body for tests/exact_flow.rs, at 30 significant digits.
+"""Reference solutions of the free rigid body for tests/models/exact_flow.rs, at 30 significant digits.
 
 Integrates  Π' = Π × Ω,  R' = R Ω̂,  Ω = 𝕀⁻¹Π  with mpmath's Taylor-series ODE solver (odefun) at
 40 working digits (independent of the crate: no elliptic functions), and prints one line per case:
 name, inertia (9), Π₀ (3), R₀ (9, row-major), t, Π(t) (3), R(t) (9).
 
-Regenerate:  python3 crates/integrators/tests/data/free_body_reference.py > crates/integrators/tests/data/free_body_reference.txt
+Regenerate:  python3 crates/mechanics/tests/data/free_body_reference.py > crates/mechanics/tests/data/free_body_reference.txt
 """
 import mpmath as mp
 
