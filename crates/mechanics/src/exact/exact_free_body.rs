@@ -1,5 +1,6 @@
 //! The exact free rigid body flow as an integrator.
 
+use super::free_body_flow::{two_sum, Orbit};
 use super::FreeBodyFlow;
 use crate::systems::RigidBody;
 use integrators::checks::check_state;
@@ -11,6 +12,15 @@ use nalgebra::Vector3;
 /// Steps the free rigid body with its exact flow ([`FreeBodyFlow`]): every step, of any size,
 /// lands on the solution to round-off, and costs the same whatever h is, so the whole horizon can
 /// be one step. Keeps everything the flow keeps.
+///
+/// The steps do not restart the flow from the rounded state: the orbit's constants (amplitudes,
+/// period, phase and angle at the start, so its invariants |Π|², h and RΠ) are computed once, from
+/// the state given to [`ExactFreeBody::new`] or [`ExactFreeBody::reset`], and each step evaluates
+/// the flow at the time elapsed since then (the steps summed in double-double arithmetic). So the
+/// invariants carry the rounding of one evaluation whatever the number of steps — no random walk,
+/// no drift (`tests/models/exact_flow.rs`: within 8.9e-16 relative over 10⁶ steps of 0.01 and of
+/// 0.05) — and a step costs only the time-dependent part of a [`FreeBodyFlow::advance`].
+/// `step(0)` leaves the state as it is.
 ///
 /// ```
 /// use integrators::{Integrator};
@@ -32,6 +42,9 @@ pub struct ExactFreeBody {
     t: f64,
     pi: Vector3<f64>,
     r: Option<So3>,
+    /// The orbit of the state given last, and the time elapsed on it (hi + lo, double-double).
+    orbit: Orbit,
+    elapsed: (f64, f64),
 }
 
 impl ExactFreeBody {
@@ -42,12 +55,16 @@ impl ExactFreeBody {
         r0: Option<So3>,
     ) -> Result<Self, IntegratorError> {
         check_state(&body, &pi0, "momentum Π", r0.as_ref())?;
+        let flow = FreeBodyFlow::new(&body);
+        let orbit = flow.orbit(&pi0, r0.as_ref(), true)?;
         Ok(Self {
-            flow: FreeBodyFlow::new(&body),
+            flow,
             body,
             t: 0.0,
             pi: pi0,
             r: r0,
+            orbit,
+            elapsed: (0.0, 0.0),
         })
     }
     /// Resets the state to (t, Π, R), with the checks of [`ExactFreeBody::new`].
@@ -61,6 +78,8 @@ impl ExactFreeBody {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.body, &pi, "momentum Π", r.as_ref())?;
+        self.orbit = self.flow.orbit(&pi, r.as_ref(), true)?;
+        self.elapsed = (0.0, 0.0);
         self.t = t;
         self.pi = pi;
         self.r = r;
@@ -79,9 +98,25 @@ impl Integrator for ExactFreeBody {
         if !h.is_finite() {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
-        let (pi, r) = self.flow.advance(h, &self.pi, self.r.as_ref())?;
-        self.pi = pi;
-        self.r = r;
+        let (s, e) = two_sum(self.elapsed.0, h);
+        let elapsed = two_sum(s, e + self.elapsed.1);
+        match self.flow.evaluate(&self.orbit, elapsed.0) {
+            Ok((pi, r)) => {
+                self.pi = pi;
+                self.r = r;
+                self.elapsed = elapsed;
+            }
+            // Beyond the phase limit from the start of the orbit: start it again here.
+            Err(_) if self.elapsed.0 != 0.0 => {
+                let orbit = self.flow.orbit(&self.pi, self.r.as_ref(), true)?;
+                let (pi, r) = self.flow.evaluate(&orbit, h)?;
+                self.orbit = orbit;
+                self.elapsed = (h, 0.0);
+                self.pi = pi;
+                self.r = r;
+            }
+            Err(err) => return Err(err),
+        }
         self.t += h;
         Ok(())
     }
