@@ -1,11 +1,11 @@
 //! The exact free rigid body flow as an integrator.
 
-use super::free_body_flow::{two_sum, Orbit};
+use super::free_body_flow::Orbit;
 use super::FreeBodyFlow;
 use crate::systems::RigidBody;
 use integrators::checks::check_state;
 use integrators::compose::{StateSnapshot, SymmetricMethod};
-use integrators::{Integrator, IntegratorError, MethodInfo, System};
+use integrators::{Clock, Integrator, IntegratorError, MethodInfo, System};
 use lie_groups::So3;
 use nalgebra::Vector3;
 
@@ -39,12 +39,12 @@ use nalgebra::Vector3;
 pub struct ExactFreeBody {
     body: RigidBody,
     flow: FreeBodyFlow,
-    t: f64,
+    t: Clock,
     pi: Vector3<f64>,
     r: Option<So3>,
-    /// The orbit of the state given last, and the time elapsed on it (hi + lo, double-double).
+    /// The orbit of the state given last, and the time elapsed on it (a compensated sum).
     orbit: Orbit,
-    elapsed: (f64, f64),
+    elapsed: Clock,
 }
 
 impl ExactFreeBody {
@@ -60,11 +60,11 @@ impl ExactFreeBody {
         Ok(Self {
             flow,
             body,
-            t: 0.0,
+            t: Clock::at(0.0),
             pi: pi0,
             r: r0,
             orbit,
-            elapsed: (0.0, 0.0),
+            elapsed: Clock::at(0.0),
         })
     }
     /// Resets the state to (t, Π, R), with the checks of [`ExactFreeBody::new`].
@@ -79,8 +79,8 @@ impl ExactFreeBody {
         }
         check_state(&self.body, &pi, "momentum Π", r.as_ref())?;
         self.orbit = self.flow.orbit(&pi, r.as_ref(), true)?;
-        self.elapsed = (0.0, 0.0);
-        self.t = t;
+        self.elapsed = Clock::at(0.0);
+        self.t = Clock::at(t);
         self.pi = pi;
         self.r = r;
         Ok(())
@@ -98,30 +98,29 @@ impl Integrator for ExactFreeBody {
         if !h.is_finite() {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
-        let (s, e) = two_sum(self.elapsed.0, h);
-        let elapsed = two_sum(s, e + self.elapsed.1);
-        match self.flow.evaluate(&self.orbit, elapsed.0) {
+        let elapsed = self.elapsed.advanced(h);
+        match self.flow.evaluate(&self.orbit, elapsed.now()) {
             Ok((pi, r)) => {
                 self.pi = pi;
                 self.r = r;
                 self.elapsed = elapsed;
             }
             // Beyond the phase limit from the start of the orbit: start it again here.
-            Err(_) if self.elapsed.0 != 0.0 => {
+            Err(_) if self.elapsed.now() != 0.0 => {
                 let orbit = self.flow.orbit(&self.pi, self.r.as_ref(), true)?;
                 let (pi, r) = self.flow.evaluate(&orbit, h)?;
                 self.orbit = orbit;
-                self.elapsed = (h, 0.0);
+                self.elapsed = Clock::at(h);
                 self.pi = pi;
                 self.r = r;
             }
             Err(err) => return Err(err),
         }
-        self.t += h;
+        self.t.advance(h);
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t
+        self.t.now()
     }
     fn momentum(&self) -> Vector3<f64> {
         self.pi
@@ -175,7 +174,7 @@ impl StateSnapshot for ExactFreeBody {
     /// (t, Π, R).
     type State = (f64, Vector3<f64>, Option<So3>);
     fn snapshot(&self) -> Self::State {
-        (self.t, self.pi, self.r)
+        (self.t.now(), self.pi, self.r)
     }
     fn restore(&mut self, (t, pi, r): Self::State) -> Result<(), IntegratorError> {
         self.reset(t, pi, r)
@@ -184,7 +183,7 @@ impl StateSnapshot for ExactFreeBody {
         if !t.is_finite() {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
-        self.t = t;
+        self.t.set(t);
         Ok(())
     }
 }

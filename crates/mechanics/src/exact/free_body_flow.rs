@@ -186,7 +186,7 @@ fn two_prod(a: f64, b: f64) -> (f64, f64) {
 
 /// a + b = s + e exactly (Knuth).
 #[inline]
-pub(super) fn two_sum(a: f64, b: f64) -> (f64, f64) {
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))

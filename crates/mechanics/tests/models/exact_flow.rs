@@ -594,9 +594,11 @@ fn stepped_exact_flow_keeps_its_invariants() {
             exact.time()
         );
         assert!(worst.iter().all(|&w| w < 1e-14), "{worst:?}");
-        // And it is the flow: the state at T = 10⁶h (the steps' sum, which `time()`, a plain
-        // running sum, misses by 1.7e-7 at h = 0.01) from one call, to the phase's rounding ε·λT.
+        // The run ends at T = 10⁶h, the rounded product (a plain running sum of the steps misses
+        // it by 1.7e-7 at h = 0.01), and there it is the flow: the state from one call, to the
+        // phase's rounding ε·λT.
         let t = 1e6 * h;
+        assert_eq!(exact.time(), t);
         let (p, _) = FreeBodyFlow::new(&body).advance(t, &pi0, None).unwrap();
         let e = (p - exact.momentum()).amax();
         println!("against one call to T: {e:.1e}");
