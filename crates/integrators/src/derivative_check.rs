@@ -181,6 +181,34 @@ pub fn finite_difference_force_derivative<G: LieGroup, S: System<G> + ?Sized>(
     })
 }
 
+/// `(1/ρ) dρ/dt` of the system's step density ([`System::step_density`]) along the
+/// conservative flow `μ̇ = ad*_ξ μ + F(g)`, `ġ = g ξ`, ξ = ∂h/∂μ, by the central difference
+/// `(ρ(μ + sμ̇, g exp(sξ)) − ρ(μ − sμ̇, g exp(−sξ))) / (2sρ)` with `s = ε^{1/3}/ρ`: the provided
+/// [`System::step_density_rate`] (error ~1e-10 relative for a smooth density). With ρ even in μ
+/// and h even in μ, the difference is odd in μ as G is. NaN where ρ is not finite and > 0.
+pub fn finite_difference_step_density_rate<G: LieGroup, S: System<G> + ?Sized>(
+    system: &S,
+    mu: &G::Algebra,
+    g: Option<&G>,
+) -> f64 {
+    let rho = system.step_density(mu, g);
+    if !(rho.is_finite() && rho > 0.0) {
+        return f64::NAN;
+    }
+    let s = RELATIVE_STEP / rho;
+    let xi = system.velocity(mu);
+    let mut mu_dot = G::ad_dual_apply(&xi, mu);
+    if let Some(force) = crate::system::force(system, g) {
+        mu_dot = mu_dot.add(&force);
+    }
+    let at = |sign: f64| {
+        let m = mu.axpy(sign * s, &mu_dot);
+        let g = g.map(|g| G::exp_compose(g, &xi.scale(sign * s)));
+        system.step_density(&m, g.as_ref())
+    };
+    (at(1.0) - at(-1.0)) / (2.0 * s * rho)
+}
+
 /// `∂²h/∂μ²` by central differences of ∂h/∂μ (2n velocity evaluations, error ~1e-10 relative):
 /// the provided [`System::hessian`] for systems that do not give theirs.
 pub fn finite_difference_hessian<G: LieGroup, S: System<G> + ?Sized>(

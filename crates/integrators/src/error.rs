@@ -79,6 +79,21 @@ pub enum IntegratorError {
         /// The time of the last accepted state.
         t: f64,
     },
+    /// The step density of a reversible variable-step run ([`crate::adaptive::ReversibleSteps`])
+    /// is unusable: the monitor's ρ or G = (1/ρ) dρ/dt is not finite, or the density ρ_{n+½}
+    /// is not > 0 (ε too large for the monitor's variation). The state is the one before the
+    /// step, at t.
+    #[error("step density {what} = {value:e} at t = {t}: it must be {requirement}")]
+    InvalidStepDensity {
+        /// Which quantity (`"ρ"`, `"G = (1/ρ) dρ/dt"`, `"ρ_{n+½}"`).
+        what: &'static str,
+        /// The value it had.
+        value: f64,
+        /// What it must be.
+        requirement: &'static str,
+        /// The time of the state it was evaluated at (the last state of the run).
+        t: f64,
+    },
     /// An error from `lie-groups` (a local map evaluated outside its domain).
     #[error(transparent)]
     Lie(#[from] LieError),

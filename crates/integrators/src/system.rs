@@ -13,7 +13,7 @@
 //!
 //! Conventions (see `lie-groups`): `ad*_ξ := (ad_ξ)ᵀ`, 𝔤* ≅ ℝⁿ by the Euclidean pairing.
 
-use lie_groups::{LieGroup, Vector};
+use lie_groups::{LieGroup, Operator, Vector};
 
 /// A mechanical system on G with reduced Hamiltonian h(μ) and optional potential V(g).
 ///
@@ -103,6 +103,36 @@ pub trait System<G: LieGroup> {
     fn casimir(&self, _mu: &G::Algebra) -> Option<f64> {
         None
     }
+    /// The step density ρ(μ, g) > 0: the rate, in 1/time, at which the motion changes here, so
+    /// that a step of the variable-step drivers is h = ε/ρ for a fixed ε
+    /// ([`crate::adaptive::ReversibleSteps`], after Hairer–Söderlind 2005, where ρ = 1/σ and σ
+    /// is their step size function).
+    ///
+    /// The provided form is `|∂h/∂μ| + ω_V(g)`: the size of the body velocity (|Ω| for a rigid
+    /// body) and the potential's frequency `ω_V² = ‖∂²h/∂μ² K(g)‖_max`, K the force derivative
+    /// of [`System::force_derivative`] (for a pendulum of length l, ω_V² = (g/l)|cos θ|), which
+    /// is 0 without a potential or without g. A model overrides it where it knows its own rate
+    /// (an orbit's √(GM/r³)). For the reversibility of the drivers it must be even in μ,
+    /// ρ(−μ, g) = ρ(μ, g), as the provided form is for a Hamiltonian even in μ.
+    fn step_density(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
+        let mut rho = self.velocity(mu).norm();
+        if let Some(g) = g.filter(|_| self.has_potential()) {
+            let k = self.hessian(mu).compose(&self.force_derivative(g));
+            rho += k.norm_max().sqrt();
+        }
+        rho
+    }
+    /// `G = (1/ρ) dρ/dt` along the flow of the conservative system, `μ̇ = ad*_ξ μ + F(g)`,
+    /// `ġ = g ξ` (ξ = ∂h/∂μ): the right-hand side `dρ/dτ = G` of the step density in the
+    /// fictitious time τ of Hairer–Söderlind's controller ([`crate::adaptive::ReversibleSteps`]).
+    /// Odd in μ when ρ is even and h is even in μ.
+    ///
+    /// Provided by central differences of [`System::step_density`] along the flow
+    /// ([`crate::derivative_check::finite_difference_step_density_rate`]: two density
+    /// evaluations); a model gives the closed form where ρ is its own.
+    fn step_density_rate(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
+        crate::derivative_check::finite_difference_step_density_rate(self, mu, g)
+    }
     /// The total energy `E = h(μ) + V(g)`; `g = None` counts V as 0 (only meaningful without a
     /// potential).
     fn energy(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
@@ -172,7 +202,10 @@ pub fn euclidean_norm<V: Vector>(v: &V, parts: core::ops::Range<usize>) -> f64 {
 
 /// The trivialized force `F(g) = −T*_e L_g dV(g)`, zero when the system has no potential or no g.
 #[inline]
-pub(crate) fn force<G: LieGroup, S: System<G>>(system: &S, g: Option<&G>) -> Option<G::Algebra> {
+pub(crate) fn force<G: LieGroup, S: System<G> + ?Sized>(
+    system: &S,
+    g: Option<&G>,
+) -> Option<G::Algebra> {
     match g {
         Some(g) if system.has_potential() => Some(system.potential_differential(g).neg()),
         _ => None,

@@ -56,6 +56,7 @@
 mod controller;
 mod driver;
 pub(crate) mod embedded_pair;
+pub mod reversible_steps;
 pub mod rkmk_pair;
 mod tableau;
 mod tolerance;
@@ -63,6 +64,7 @@ mod tolerance;
 pub use controller::{Controller, Decision};
 pub use driver::{Adaptive, Stats};
 pub use embedded_pair::{starting_step, EmbeddedPair};
+pub use reversible_steps::ReversibleSteps;
 pub use rkmk_pair::{RkmkDop853, RkmkDopri5, RkmkPair};
 pub use tableau::{ButcherPair, Dop853, DormandPrince54};
 pub use tolerance::Tolerance;

@@ -29,6 +29,7 @@ mod order;
 mod potential;
 mod processing;
 mod product_groups;
+mod reversible_steps;
 mod right_trivialized;
 mod robustness;
 mod splitting;

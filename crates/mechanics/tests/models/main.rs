@@ -8,6 +8,7 @@ mod common;
 mod exact_flow;
 mod facts;
 mod modified;
+mod satellite_orbit;
 mod systems_coupled_bodies;
 mod systems_gyrostat;
 mod systems_heavy_top;
