@@ -76,7 +76,9 @@ fn inverse_steps_come_back_to_round_off() {
         "μ back within {:e}",
         (mu - mu0).norm()
     );
-    assert!(dg < 1e-12, "g back within {dg:e}");
+    // Each h comes back to the rounding of ρ_{n+½}, so g (turning at |Ω| ≈ 1) comes back to
+    // the time's round-off, |Ω| · 1000 ulps of t.
+    assert!(dg < 1e-11, "g back within {dg:e}");
     assert!((back.density() - rho0).abs() < 1e-12 * rho0);
 }
 
