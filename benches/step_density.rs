@@ -18,7 +18,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use integrators::adaptive::{Adaptive, ReversibleSteps, RkmkDop853, Tolerance};
 use integrators::splitting::Splitting;
 use integrators::Integrator;
-use lie_groups::{Se3, So3};
+use lie_groups::{LieGroup, Se3, So3};
 use mechanics::RigidBodySe3;
 use nalgebra::{Matrix3, Vector3, Vector6};
 use std::hint::black_box;
@@ -56,12 +56,19 @@ fn fixed(n: usize) -> Splitting<Se3, RigidBodySe3> {
 
 fn bench(c: &mut Criterion) {
     let start = strang();
-    let pair = RkmkDop853::new(satellite(), start.momentum(), start.configuration().cloned());
+    let pair = RkmkDop853::new(
+        satellite(),
+        start.momentum(),
+        start.configuration().copied(),
+    );
     let mut reference = Adaptive::new(pair.unwrap(), Tolerance::uniform(1e-13).unwrap());
     reference.advance_to(T).unwrap();
     let reference = reference.into_method();
     let error = |m: &Splitting<Se3, RigidBodySe3>| {
-        let (g, r) = (m.configuration().unwrap(), reference.configuration().unwrap());
+        let (g, r) = (
+            m.configuration().unwrap(),
+            reference.configuration().unwrap(),
+        );
         (g.translation() - r.translation()).norm()
             + (g.rotation().as_matrix() - r.rotation().as_matrix()).norm()
             + (m.momentum() - reference.momentum()).norm()

@@ -39,7 +39,10 @@
 //!   impulse to 1.5e-15 per step).
 //! - [`adaptive`]: tolerance-driven runs — embedded pairs (Dormand–Prince 5(4), DOP853) in the
 //!   algebra (RKMK, any group) and on (q, Π), run to `rtol`/`atol` by a PI controller, with
-//!   output times and events inside the variable steps (see the section below).
+//!   output times and events inside the variable steps (see the section below); and variable
+//!   steps for the symmetric methods that keep them reversible ([`adaptive::ReversibleSteps`],
+//!   Hairer–Söderlind's step-density controller, the density from [`System::step_density`]):
+//!   energy without drift where the pairs' energy drifts.
 //! - [`dense_output`] and [`events`]: the state between steps by a cubic Hermite interpolant on
 //!   G × 𝔤* (`g₀ exp Z(s)`), output at requested times and zero crossings of event functions
 //!   located to a tolerance, for any integrator ([`dense_output::integrate_dense`]).

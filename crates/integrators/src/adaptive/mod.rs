@@ -23,6 +23,16 @@
 //! controller shrinks below the minimum ([`crate::IntegratorError::StepSizeUnderflow`]), with
 //! the state at the last accepted step.
 //!
+//! The pairs' steps are chosen from the past, so a symmetric method run with them is no longer
+//! symmetric and its energy drifts. For the symmetric methods (the splittings and their
+//! compositions, kinetic–kick, Lie–Poisson and Euler–Poincaré θ = ½) [`ReversibleSteps`] gives
+//! variable steps that keep them symmetric and reversible: the explicit step-density controller
+//! of Hairer–Söderlind (2005), h_n = ε/ρ_{n+½} with ρ driven by the system's density
+//! ([`crate::System::step_density`], [`crate::System::step_density_rate`]); no error estimate,
+//! ε is the accuracy knob; energy without drift, Casimirs and momentum maps as the method keeps
+//! them ([`reversible_steps`]: the formulas, why they are reversible, how T and output times are
+//! reached without feeding back into the steps).
+//!
 //! The controller is independent of the method ([`Controller::decide`] takes a scaled error and
 //! returns accept/reject and the step factor), so other methods with an error estimate can use
 //! it.
