@@ -64,14 +64,16 @@
 //! ```
 //! use integrators::adaptive::ReversibleSteps;
 //! use integrators::{splitting::Splitting, Integrator};
-//! use lie_groups::{Se3, So3};
+//! use lie_groups::{LieGroup, Se3, So3};
 //! use mechanics::RigidBodySe3;
 //! use nalgebra::{Matrix3, Vector3, Vector6};
 //!
-//! // GM = 1, a = 1, e = 0.8: periapsis r = 0.2 at speed 3, period 2π.
-//! let sat = RigidBodySe3::satellite(1.0, Matrix3::from_diagonal(&Vector3::new(1e-3, 1.5e-3, 2e-3)), 1.0)?;
+//! // GM = 1, a = 1, e = 0.8: periapsis r = 0.2 at speed 3, period 2π; a small, nearly
+//! // axisymmetric body turning slowly.
+//! let inertia = Matrix3::from_diagonal(&Vector3::new(1.0, 1.03, 1.06)) * 1e-3;
+//! let sat = RigidBodySe3::satellite(1.0, inertia, 1.0)?;
 //! let g0 = Se3::from_parts(So3::identity(), Vector3::new(0.2, 0.0, 0.0));
-//! let mu0 = Vector6::new(0.0, 0.0, 1e-3, 0.0, 3.0, 0.0);
+//! let mu0 = Vector6::new(0.0, 0.0, 1e-4, 0.0, 3.0, 0.0);
 //! let method = Splitting::new(sat.clone(), mu0, Some(g0))?;
 //! let mut run = ReversibleSteps::new(method, sat, 0.05)?;
 //! let at_t = run.advance_to(2.0 * std::f64::consts::PI)?; // one orbit

@@ -79,7 +79,10 @@ fn inverse_steps_come_back_to_round_off() {
     // Each h comes back to the rounding of ρ_{n+½}, so g (turning at |Ω| ≈ 1) comes back to
     // the time's round-off, |Ω| · 1000 ulps of t.
     assert!(dg < 1e-11, "g back within {dg:e}");
-    assert!((back.density() - rho0).abs() < 1e-12 * rho0);
+    // ρ sums G(y) by central differences of |Ω|, whose rounding (~1e-11 relative, the
+    // difference's ε/s) differs between the way out and the way back by as much.
+    let drho = (back.density() - rho0).abs() / rho0;
+    assert!(drho < 1e-10, "ρ back within {drho:e}");
 }
 
 #[test]
