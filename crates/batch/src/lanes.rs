@@ -1,0 +1,197 @@
+//! A vector of f64 lanes over a pulp instruction set, with the arithmetic operators, so that the
+//! kernels read as the scalar formulas they implement.
+//!
+//! Every operation is lane-wise and IEEE 754: `+ − × ÷ √` are correctly rounded, and
+//! [`F::mul_add`] is the fused multiply-add (one rounding) on every level, the scalar one
+//! included (pulp's `Scalar` calls `f64::mul_add`). Nothing is left to the compiler: Rust does not
+//! contract `a * b + c` into an FMA, so a formula written here rounds the same way in each lane of
+//! each level — which is what makes a body's bits independent of its lane, the batch size and the
+//! instruction set. No operation reads a neighbouring lane.
+
+use core::ops::{Add, Div, Mul, Neg, Sub};
+use pulp::Simd;
+
+/// One vector of f64 lanes (1, 4 or 8 of them) of the instruction set `S`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct F<S: Simd> {
+    pub(crate) s: S,
+    pub(crate) v: S::f64s,
+}
+
+/// A lane mask of the instruction set `S`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct M<S: Simd> {
+    pub(crate) s: S,
+    pub(crate) m: S::m64s,
+}
+
+impl<S: Simd> F<S> {
+    /// Every lane `x`.
+    #[inline(always)]
+    pub(crate) fn splat(s: S, x: f64) -> Self {
+        Self {
+            s,
+            v: s.splat_f64s(x),
+        }
+    }
+    /// The lanes of `lanes[..S::F64_LANES]`; missing entries (a shorter slice) are 0.
+    #[inline(always)]
+    pub(crate) fn load(s: S, lanes: &[f64]) -> Self {
+        let mut v: S::f64s = bytemuck::Zeroable::zeroed();
+        let dst: &mut [f64] = bytemuck::cast_slice_mut(core::slice::from_mut(&mut v));
+        let n = dst.len().min(lanes.len());
+        dst[..n].copy_from_slice(&lanes[..n]);
+        Self { s, v }
+    }
+    /// Writes the first `out.len()` lanes (at most all of them) to `out`.
+    #[inline(always)]
+    pub(crate) fn store(self, out: &mut [f64]) {
+        let src: &[f64] = bytemuck::cast_slice(core::slice::from_ref(&self.v));
+        let n = src.len().min(out.len());
+        out[..n].copy_from_slice(&src[..n]);
+    }
+    /// The lanes as an array view.
+    #[inline(always)]
+    pub(crate) fn lanes(&self) -> &[f64] {
+        bytemuck::cast_slice(core::slice::from_ref(&self.v))
+    }
+    /// `self · b + c` with one rounding (fused multiply-add).
+    #[inline(always)]
+    pub(crate) fn mul_add(self, b: Self, c: Self) -> Self {
+        Self {
+            s: self.s,
+            v: self.s.mul_add_f64s(self.v, b.v, c.v),
+        }
+    }
+    /// `√self`, correctly rounded.
+    #[inline(always)]
+    pub(crate) fn sqrt(self) -> Self {
+        Self {
+            s: self.s,
+            v: self.s.sqrt_f64s(self.v),
+        }
+    }
+    /// `|self|` (clears the sign bit).
+    #[inline(always)]
+    pub(crate) fn abs(self) -> Self {
+        Self {
+            s: self.s,
+            v: self.s.abs_f64s(self.v),
+        }
+    }
+    /// Lanes where `self < b` (false for NaN).
+    #[inline(always)]
+    pub(crate) fn lt(self, b: Self) -> M<S> {
+        M {
+            s: self.s,
+            m: self.s.less_than_f64s(self.v, b.v),
+        }
+    }
+    /// Lanes where `self <= b` (false for NaN).
+    #[inline(always)]
+    pub(crate) fn le(self, b: Self) -> M<S> {
+        M {
+            s: self.s,
+            m: self.s.less_than_or_equal_f64s(self.v, b.v),
+        }
+    }
+    /// Lanes where `self == b` (false for NaN).
+    #[inline(always)]
+    pub(crate) fn eq(self, b: Self) -> M<S> {
+        M {
+            s: self.s,
+            m: self.s.equal_f64s(self.v, b.v),
+        }
+    }
+    /// Lanes whose bits, as an unsigned integer, have `bits & mask == 0`.
+    #[inline(always)]
+    pub(crate) fn bits_clear(self, mask: u64) -> M<S> {
+        let s = self.s;
+        let u = s.and_u64s(s.transmute_u64s_f64s(self.v), s.splat_u64s(mask));
+        M {
+            s,
+            m: s.equal_u64s(u, s.splat_u64s(0)),
+        }
+    }
+    /// Lanes that are finite (not NaN, not ±∞): `self − self == 0` exactly there.
+    #[inline(always)]
+    pub(crate) fn is_finite(self) -> M<S> {
+        (self - self).eq(Self::splat(self.s, 0.0))
+    }
+}
+
+impl<S: Simd> M<S> {
+    /// `if self { a } else { b }`, lane by lane.
+    #[inline(always)]
+    pub(crate) fn select(self, a: F<S>, b: F<S>) -> F<S> {
+        F {
+            s: self.s,
+            v: self.s.select_f64s(self.m, a.v, b.v),
+        }
+    }
+    /// Whether any lane is set.
+    #[inline(always)]
+    pub(crate) fn any(self) -> bool {
+        self.s.first_true_m64s(self.m) < S::F64_LANES
+    }
+    /// Lane-wise and.
+    #[inline(always)]
+    pub(crate) fn and(self, b: Self) -> Self {
+        Self {
+            s: self.s,
+            m: self.s.and_m64s(self.m, b.m),
+        }
+    }
+    /// Lane-wise negation.
+    #[inline(always)]
+    pub(crate) fn not(self) -> Self {
+        Self {
+            s: self.s,
+            m: self.s.not_m64s(self.m),
+        }
+    }
+}
+
+macro_rules! binop {
+    ($tr:ident, $f:ident, $op:ident) => {
+        impl<S: Simd> $tr for F<S> {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, b: Self) -> Self {
+                Self {
+                    s: self.s,
+                    v: self.s.$op(self.v, b.v),
+                }
+            }
+        }
+        impl<S: Simd> $tr<f64> for F<S> {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, b: f64) -> Self {
+                Self {
+                    s: self.s,
+                    v: self.s.$op(self.v, self.s.splat_f64s(b)),
+                }
+            }
+        }
+    };
+}
+binop!(Add, add, add_f64s);
+binop!(Sub, sub, sub_f64s);
+binop!(Mul, mul, mul_f64s);
+binop!(Div, div, div_f64s);
+
+impl<S: Simd> Neg for F<S> {
+    type Output = Self;
+    /// Flips the sign bit (exact; −0 for +0).
+    #[inline(always)]
+    fn neg(self) -> Self {
+        let s = self.s;
+        Self {
+            s,
+            v: s.transmute_f64s_u64s(
+                s.xor_u64s(s.transmute_u64s_f64s(self.v), s.splat_u64s(1 << 63)),
+            ),
+        }
+    }
+}

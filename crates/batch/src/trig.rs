@@ -1,0 +1,221 @@
+//! `sin` and `cos` of every lane at once, and the coefficients of the Rodrigues formula, without a
+//! branch on a lane's value (a lane-wise select instead), so that each lane's bits depend on its
+//! own argument alone.
+//!
+//! **Polynomials.** The fdlibm kernels `__kernel_sin` / `__kernel_cos` (Sun Microsystems, 1993,
+//! as kept in musl's `__sin.c` / `__cos.c`: "Permission to use, copy, modify, and distribute this
+//! software is freely granted, provided that this notice is preserved"): minimax fits on
+//! |r| ≤ π/4 with approximation errors below 2⁻⁵⁸, evaluated here by Horner's rule in fused
+//! multiply-adds (the same coefficients as `lie_groups`' scalar `sin_cos`).
+//!
+//! **Reduction.** `n = rint(x · 2/π)` (by adding and subtracting 1.5·2⁵², exact for
+//! |x · 2/π| < 2⁵¹) and `r = x − n·π/2` with π/2 = P₁ + P₂ + P₃ split in three doubles (Cody–Waite
+//! with fused multiply-adds): `fma(−n, P₁, x)` is exact (x − nP₁ is a multiple of 2⁻⁵³ below 1 in
+//! magnitude), the two later terms round once each, so r carries a relative error of about two
+//! roundings while |n P₃| stays far below the smallest |r| a double reaches, which holds for
+//! |x| ≤ [`REDUCTION_LIMIT`] = 2²⁸. The quadrant n mod 4 then swaps and negates the kernels.
+//! Lanes beyond the limit, ±∞ and NaN are computed by libm's `sin_cos` one by one (a cold path;
+//! ±∞ and NaN give NaN, as libm does).
+//!
+//! **Accuracy** (test `sin_cos_matches_libm_over_the_whole_range`): within 2 ulp of glibc's
+//! correctly rounded sin and cos on [−2²⁸, 2²⁸] (sampled densely near 0, on [−2π, 2π] and
+//! logarithmically beyond); where the result is tiny (cos near an odd multiple of π/2), within
+//! an absolute 2·2⁻⁵³ (the reduction's error, a few ulp of the reduced argument).
+//!
+//! **One path, every width.** When no lane needs the reduction (`n = 0` in every lane) the kernels
+//! are evaluated on x itself; on the other path the lanes with n = 0 take x itself as the reduced
+//! argument (a select) and the quadrant step leaves them alone, so a lane's bits are the same
+//! whichever path its neighbours sent the vector on (test `a_lane_does_not_depend_on_its_neighbours`).
+
+use crate::lanes::{F, M};
+use crate::{BatchError, Level};
+use pulp::{Simd, WithSimd};
+
+/// sin r ≈ r + S₁r³ + … + S₆r¹³ on |r| ≤ π/4 (fdlibm `__kernel_sin`).
+const S1: f64 = f64::from_bits(0xBFC5_5555_5555_5549);
+const S2: f64 = f64::from_bits(0x3F81_1111_1110_F8A6);
+const S3: f64 = f64::from_bits(0xBF2A_01A0_19C1_61D5);
+const S4: f64 = f64::from_bits(0x3EC7_1DE3_57B1_FE7D);
+const S5: f64 = f64::from_bits(0xBE5A_E5E6_8A2B_9CEB);
+const S6: f64 = f64::from_bits(0x3DE5_D93A_5ACF_D57C);
+/// cos r ≈ 1 − r²/2 + C₁r⁴ + … + C₆r¹⁴ on |r| ≤ π/4 (fdlibm `__kernel_cos`).
+const C1: f64 = f64::from_bits(0x3FA5_5555_5555_554C);
+const C2: f64 = f64::from_bits(0xBF56_C16C_16C1_5177);
+const C3: f64 = f64::from_bits(0x3EFA_01A0_19CB_1590);
+const C4: f64 = f64::from_bits(0xBE92_7E4F_809C_52AD);
+const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4);
+const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4);
+
+/// 2/π rounded.
+const INV_PIO2: f64 = f64::from_bits(0x3FE4_5F30_6DC9_C883);
+/// π/2 = P₁ + P₂ + P₃ + O(2⁻¹⁶⁰): π/2 rounded, then the roundings of the remainders.
+const P1: f64 = f64::from_bits(0x3FF9_21FB_5444_2D18);
+const P2: f64 = f64::from_bits(0x3C91_A626_3314_5C07);
+const P3: f64 = f64::from_bits(0xB91F_1976_B7ED_8FBC);
+/// 1.5·2⁵²: `(t + ROUNDER) − ROUNDER` rounds |t| < 2⁵¹ to the nearest integer (ties to even), and
+/// the low bits of `t + ROUNDER` are that integer modulo 2⁵¹ (two's complement for t < 0).
+const ROUNDER: f64 = 6_755_399_441_055_744.0;
+
+/// 2⁻²⁷: below it sin r = r to within half an ulp.
+const TINY: f64 = 7.450_580_596_923_828e-9;
+
+/// |x| up to which the lanes reduce the argument themselves; beyond, libm does (see the module
+/// page).
+pub const REDUCTION_LIMIT: f64 = 268_435_456.0;
+
+/// `(sin r, cos r)` for |r| ≤ π/4 (a little beyond is harmless: the kernels' error grows slowly).
+#[inline(always)]
+fn kernels<S: Simd>(r: F<S>) -> (F<S>, F<S>) {
+    let s = r.s;
+    let c = |x: f64| F::splat(s, x);
+    let z = r * r;
+    let ps = z.mul_add(z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)), c(S2));
+    let sin = (z * r).mul_add(z.mul_add(ps, c(S1)), r);
+    // Below 2⁻²⁷, sin r = r correctly rounded; taking r there also keeps sin(−0) = −0 (the sum
+    // above gives +0).
+    let tiny = r.abs().lt(c(TINY));
+    (tiny.select(r, sin), cos_kernel(z))
+}
+
+/// `cos r` from z = r² for |r| ≤ π/4: `w + ((1 − w − r²/2) + r⁴ C(r²))`, w = 1 − r²/2, the
+/// rounding of w carried as in fdlibm.
+#[inline(always)]
+fn cos_kernel<S: Simd>(z: F<S>) -> F<S> {
+    let s = z.s;
+    let c = |x: f64| F::splat(s, x);
+    let pc = z.mul_add(
+        z.mul_add(z.mul_add(z.mul_add(z.mul_add(c(C6), c(C5)), c(C4)), c(C3)), c(C2)),
+        c(C1),
+    );
+    let hz = z * 0.5;
+    let w = c(1.0) - hz;
+    let tail = (c(1.0) - w) - hz;
+    w + (z * z).mul_add(pc, tail)
+}
+
+/// `(sin x, cos x)` of every lane (module page: accuracy, range, the libm lanes).
+#[inline(always)]
+pub(crate) fn sin_cos<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
+    let s = x.s;
+    let c = |v: f64| F::splat(s, v);
+    let nb = x * INV_PIO2 + ROUNDER;
+    let n = nb - ROUNDER;
+    let zero = c(0.0);
+    let (sin, cos) = if n.eq(zero).not().any() {
+        let r = n.mul_add(c(-P1), x);
+        let r = n.mul_add(c(-P2), r);
+        let r = n.mul_add(c(-P3), r);
+        // Lanes with n = 0 take x itself: the same bits as the path without reduction (the
+        // terms above would turn x = −0 into +0, P₃ being negative).
+        let r = n.eq(zero).select(x, r);
+        let (ks, kc) = kernels(r);
+        // n mod 4: odd quadrants swap sin and cos; sin is negated in quadrants 2, 3 and cos in
+        // 1, 2.
+        let even = nb.bits_clear(1);
+        let (sa, ca) = (even.select(ks, kc), even.select(kc, ks));
+        let q_low = nb.bits_clear(2);
+        let q_next = (nb + 1.0).bits_clear(2);
+        (q_low.select(sa, -sa), q_next.select(ca, -ca))
+    } else {
+        kernels(x)
+    };
+    let wild = x.abs().le(c(REDUCTION_LIMIT)).not();
+    if wild.any() {
+        return libm_lanes(x, wild, sin, cos);
+    }
+    (sin, cos)
+}
+
+/// The lanes of `wild` from libm's `sin_cos`, the others as given (a cold path).
+#[cold]
+#[inline(never)]
+fn libm_lanes<S: Simd>(x: F<S>, wild: M<S>, sin: F<S>, cos: F<S>) -> (F<S>, F<S>) {
+    let s = x.s;
+    let mut sv = [0.0f64; 8];
+    let mut cv = [0.0f64; 8];
+    let lanes = x.lanes();
+    for (i, &xi) in lanes.iter().enumerate() {
+        (sv[i], cv[i]) = xi.sin_cos();
+    }
+    let (ls, lc) = (F::load(s, &sv), F::load(s, &cv));
+    (wild.select(ls, sin), wild.select(lc, cos))
+}
+
+/// The Rodrigues coefficients `(a, b) = (sin θ/θ, (1 − cos θ)/θ²)` of `exp(ω) = I + aω̂ + bω̂²`
+/// from θ² = |ω|² alone, lane by lane: with h = θ/2, `a = 2q cos h`, `b = 2q²`, `q = sin h/θ`
+/// (products only: no cancellation at any θ, as in `lie_groups::So3::exp`).
+///
+/// For θ ≤ π/2 (h ≤ π/4, every lane of a usual step) `q = ½ sin h/h` and `cos h` are the fdlibm
+/// kernels as polynomials in h² = θ²/4 — no square root, no division, exact at θ = 0 (a = 1,
+/// b = ½). Only if some lane is beyond π/2 is `q = sin h/θ` formed with √ and ÷ (and taken for
+/// those lanes alone). A non-finite θ² gives NaN.
+#[inline(always)]
+pub(crate) fn rodrigues_coefficients<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
+    let s = t2.s;
+    let c = |v: f64| F::splat(s, v);
+    let z = t2 * 0.25;
+    let ps = z.mul_add(z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)), c(S2));
+    let q = z.mul_add(z.mul_add(ps, c(S1)), c(1.0)) * 0.5;
+    let ch = cos_kernel(z);
+    let (q, ch) = {
+        let near = z.le(c(core::f64::consts::FRAC_PI_4 * core::f64::consts::FRAC_PI_4));
+        if near.not().any() {
+            let t = t2.sqrt();
+            let (sh, chg) = sin_cos(t * 0.5);
+            (near.select(q, sh / t), near.select(ch, chg))
+        } else {
+            (q, ch)
+        }
+    };
+    let q2 = q + q;
+    (q2 * ch, q2 * q)
+}
+
+/// [`sin_cos`] over slices on a given level: `sin[i], cos[i] = sin_cos(x[i])`, the last vector
+/// padded. The lane kernel made callable on its own, for its tests against libm.
+///
+/// Errors: unequal lengths, or a level this CPU lacks.
+pub fn sin_cos_slices(
+    level: Level,
+    x: &[f64],
+    sin: &mut [f64],
+    cos: &mut [f64],
+) -> Result<(), BatchError> {
+    for (what, len) in [("sin", sin.len()), ("cos", cos.len())] {
+        if len != x.len() {
+            return Err(BatchError::LengthMismatch {
+                what,
+                got: len,
+                expected: x.len(),
+            });
+        }
+    }
+    struct Op<'a>(&'a [f64], &'a mut [f64], &'a mut [f64]);
+    impl WithSimd for Op<'_> {
+        type Output = ();
+        #[inline(always)]
+        fn with_simd<S: Simd>(self, s: S) {
+            let w = S::F64_LANES;
+            for ((x, sn), cs) in self.0.chunks(w).zip(self.1.chunks_mut(w)).zip(self.2.chunks_mut(w)) {
+                let (a, b) = sin_cos(F::load(s, x));
+                a.store(sn);
+                b.store(cs);
+            }
+        }
+    }
+    level.dispatch(Op(x, sin, cos))
+}
+
+/// `(sin x, cos x)` on one lane: the bits every lane of every level computes for x (the scalar
+/// reference of the batch kernels; within 2 ulp of libm, see the module page).
+pub fn sin_cos_lane(x: f64) -> (f64, f64) {
+    let (s, c) = sin_cos(F::splat(pulp::Scalar, x));
+    (s.v, c.v)
+}
+
+/// The Rodrigues coefficients `(sin θ/θ, (1 − cos θ)/θ²)` from θ² on one lane, as every lane
+/// computes them.
+pub fn rodrigues_coefficients_lane(t2: f64) -> (f64, f64) {
+    let (a, b) = rodrigues_coefficients(F::splat(pulp::Scalar, t2));
+    (a.v, b.v)
+}

@@ -1,0 +1,151 @@
+//! The lanes' sin and cos against libm (glibc's, correctly rounded in practice) over the whole
+//! range, on every level, and the Rodrigues coefficients against their closed forms.
+
+use batch::trig::{
+    rodrigues_coefficients_lane, sin_cos_lane, sin_cos_slices, REDUCTION_LIMIT,
+};
+use batch::Level;
+
+/// Distance in ulps between two doubles of the same sign (∞ for different signs).
+fn ulps(a: f64, b: f64) -> u64 {
+    if a == b {
+        return 0;
+    }
+    if a.is_sign_negative() != b.is_sign_negative() {
+        return u64::MAX;
+    }
+    (a.to_bits() as i64 - b.to_bits() as i64).unsigned_abs()
+}
+
+/// Arguments: dense near 0, on [−2π, 2π], near multiples of π/2, and logarithmic to 2²⁸.
+fn arguments() -> Vec<f64> {
+    let mut xs = Vec::new();
+    let n = 400_000;
+    for i in 0..=n {
+        let t = -1.0 + 2.0 * i as f64 / n as f64;
+        xs.push(t * core::f64::consts::TAU);
+        xs.push(t * 1e-3);
+    }
+    // logarithmic, both signs, up to the reduction limit (and a little beyond: libm lanes)
+    let m = 200_000;
+    for i in 0..=m {
+        let x = 10f64.powf(-300.0 + 309.0 * i as f64 / m as f64);
+        if x <= 2.0 * REDUCTION_LIMIT {
+            xs.push(x);
+            xs.push(-x);
+        }
+    }
+    // a few ulps around multiples of π/2
+    for k in -2000i64..=2000 {
+        let c = k as f64 * core::f64::consts::FRAC_PI_2;
+        for d in -3i64..=3 {
+            xs.push(f64::from_bits((c.to_bits() as i64 + d) as u64));
+        }
+    }
+    xs.extend([0.0, -0.0, 5e-324, -5e-324, f64::MIN_POSITIVE, REDUCTION_LIMIT]);
+    xs
+}
+
+#[test]
+fn sin_cos_matches_libm_over_the_whole_range() {
+    let xs = arguments();
+    let (mut s, mut c) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
+    sin_cos_slices(Level::Scalar, &xs, &mut s, &mut c).unwrap();
+    let (mut worst_s, mut worst_c, mut worst_abs) = (0u64, 0u64, 0f64);
+    for ((&x, &si), &ci) in xs.iter().zip(&s).zip(&c) {
+        let (s0, c0) = x.sin_cos();
+        // Tiny results (the argument near a multiple of π/2): the reduction's absolute error.
+        for (got, want, worst) in [(si, s0, &mut worst_s), (ci, c0, &mut worst_c)] {
+            if want == 0.0 {
+                worst_abs = worst_abs.max((got - want).abs());
+            } else {
+                *worst = (*worst).max(ulps(got, want));
+            }
+        }
+    }
+    println!("worst ulps: sin {worst_s}, cos {worst_c}; worst absolute near zeros {worst_abs:e}");
+    assert!(worst_s <= 2 && worst_c <= 2, "sin {worst_s}, cos {worst_c} ulps");
+    assert!(worst_abs == 0.0, "absolute {worst_abs:e} where libm gives 0");
+    // signed zeros kept: sin(−0) = −0
+    assert!(sin_cos_lane(-0.0).0.is_sign_negative() && sin_cos_lane(0.0).0.is_sign_positive());
+}
+
+#[test]
+fn every_level_gives_the_bits_of_the_scalar_lane() {
+    let xs = arguments();
+    let (mut s0, mut c0) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
+    sin_cos_slices(Level::Scalar, &xs, &mut s0, &mut c0).unwrap();
+    for level in Level::available() {
+        let (mut s, mut c) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
+        sin_cos_slices(level, &xs, &mut s, &mut c).unwrap();
+        for i in 0..xs.len() {
+            assert_eq!(s[i].to_bits(), s0[i].to_bits(), "{level}: sin({:e})", xs[i]);
+            assert_eq!(c[i].to_bits(), c0[i].to_bits(), "{level}: cos({:e})", xs[i]);
+        }
+    }
+}
+
+/// A lane's bits do not depend on what its neighbours hold: one huge argument (a libm lane) or
+/// one that needs the reduction next to small ones leaves the small ones' bits alone.
+#[test]
+fn a_lane_does_not_depend_on_its_neighbours() {
+    let small = [0.1, -0.3, 0.7, 1e-9, 0.0, -0.7, 0.25, 0.5];
+    for level in Level::available() {
+        let (mut s, mut c) = ([0.0; 8], [0.0; 8]);
+        sin_cos_slices(level, &small, &mut s, &mut c).unwrap();
+        for wild in [3.0, 1e12, f64::NAN, f64::INFINITY] {
+            for pos in 0..8 {
+                let mut xs = small;
+                xs[pos] = wild;
+                let (mut s1, mut c1) = ([0.0; 8], [0.0; 8]);
+                sin_cos_slices(level, &xs, &mut s1, &mut c1).unwrap();
+                for i in (0..8).filter(|&i| i != pos) {
+                    assert_eq!(s1[i].to_bits(), s[i].to_bits());
+                    assert_eq!(c1[i].to_bits(), c[i].to_bits());
+                }
+                let (ws, wc) = (s1[pos], c1[pos]);
+                if wild.is_finite() {
+                    let (e_s, e_c) = wild.sin_cos();
+                    assert!((ws - e_s).abs() <= 4e-16 && (wc - e_c).abs() <= 4e-16);
+                } else {
+                    assert!(ws.is_nan() && wc.is_nan(), "{wild}: NaN propagates");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn nan_and_infinities_give_nan() {
+    for x in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let (s, c) = sin_cos_lane(x);
+        assert!(s.is_nan() && c.is_nan(), "{x}");
+    }
+    let (a, b) = rodrigues_coefficients_lane(f64::NAN);
+    assert!(a.is_nan() && b.is_nan());
+}
+
+#[test]
+fn rodrigues_coefficients_match_their_closed_forms() {
+    let mut worst = (0u64, 0u64);
+    for i in 1..=200_000 {
+        let theta = 6.0 * i as f64 / 200_000.0;
+        let t2 = theta * theta;
+        let th = t2.sqrt();
+        let (a, b) = rodrigues_coefficients_lane(t2);
+        let (s, c) = th.sin_cos();
+        let a0 = s / th;
+        // (1 − cos θ)/θ² = 2 sin²(θ/2)/θ² without cancellation
+        let b0 = 2.0 * ((0.5 * th).sin() / th).powi(2);
+        if a0.abs() > 1e-3 {
+            worst.0 = worst.0.max(ulps(a, a0));
+        } else {
+            assert!((a - a0).abs() < 1e-18, "θ = {theta}: {a:e} vs {a0:e}");
+        }
+        worst.1 = worst.1.max(ulps(b, b0));
+        let _ = c;
+    }
+    println!("rodrigues ulps (a, b): {worst:?}");
+    assert!(worst.0 <= 8 && worst.1 <= 8, "{worst:?}");
+    assert_eq!(rodrigues_coefficients_lane(0.0), (1.0, 0.5));
+}
