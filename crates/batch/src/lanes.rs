@@ -13,14 +13,14 @@ use pulp::Simd;
 
 /// One vector of f64 lanes (1, 4 or 8 of them) of the instruction set `S`.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct F<S: Simd> {
+pub struct F<S: Simd> {
     pub(crate) s: S,
     pub(crate) v: S::f64s,
 }
 
 /// A lane mask of the instruction set `S`.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct M<S: Simd> {
+pub struct M<S: Simd> {
     pub(crate) s: S,
     pub(crate) m: S::m64s,
 }
@@ -28,7 +28,7 @@ pub(crate) struct M<S: Simd> {
 impl<S: Simd> F<S> {
     /// Every lane `x`.
     #[inline(always)]
-    pub(crate) fn splat(s: S, x: f64) -> Self {
+    pub fn splat(s: S, x: f64) -> Self {
         Self {
             s,
             v: s.splat_f64s(x),
@@ -36,7 +36,7 @@ impl<S: Simd> F<S> {
     }
     /// The lanes of `lanes[..S::F64_LANES]`; missing entries (a shorter slice) are 0.
     #[inline(always)]
-    pub(crate) fn load(s: S, lanes: &[f64]) -> Self {
+    pub fn load(s: S, lanes: &[f64]) -> Self {
         let mut v: S::f64s = bytemuck::Zeroable::zeroed();
         let dst: &mut [f64] = bytemuck::cast_slice_mut(core::slice::from_mut(&mut v));
         let n = dst.len().min(lanes.len());
@@ -45,19 +45,19 @@ impl<S: Simd> F<S> {
     }
     /// Writes the first `out.len()` lanes (at most all of them) to `out`.
     #[inline(always)]
-    pub(crate) fn store(self, out: &mut [f64]) {
+    pub fn store(self, out: &mut [f64]) {
         let src: &[f64] = bytemuck::cast_slice(core::slice::from_ref(&self.v));
         let n = src.len().min(out.len());
         out[..n].copy_from_slice(&src[..n]);
     }
     /// The lanes as an array view.
     #[inline(always)]
-    pub(crate) fn lanes(&self) -> &[f64] {
+    pub fn lanes(&self) -> &[f64] {
         bytemuck::cast_slice(core::slice::from_ref(&self.v))
     }
     /// `self · b + c` with one rounding (fused multiply-add).
     #[inline(always)]
-    pub(crate) fn mul_add(self, b: Self, c: Self) -> Self {
+    pub fn mul_add(self, b: Self, c: Self) -> Self {
         Self {
             s: self.s,
             v: self.s.mul_add_f64s(self.v, b.v, c.v),
@@ -65,7 +65,7 @@ impl<S: Simd> F<S> {
     }
     /// `√self`, correctly rounded.
     #[inline(always)]
-    pub(crate) fn sqrt(self) -> Self {
+    pub fn sqrt(self) -> Self {
         Self {
             s: self.s,
             v: self.s.sqrt_f64s(self.v),
@@ -73,15 +73,23 @@ impl<S: Simd> F<S> {
     }
     /// `|self|` (clears the sign bit).
     #[inline(always)]
-    pub(crate) fn abs(self) -> Self {
+    pub fn abs(self) -> Self {
         Self {
             s: self.s,
             v: self.s.abs_f64s(self.v),
         }
     }
+    /// The larger of the two, lane by lane (for finite lanes, as `f64::max`).
+    #[inline(always)]
+    pub fn max(self, b: Self) -> Self {
+        Self {
+            s: self.s,
+            v: self.s.max_f64s(self.v, b.v),
+        }
+    }
     /// Lanes where `self < b` (false for NaN).
     #[inline(always)]
-    pub(crate) fn lt(self, b: Self) -> M<S> {
+    pub fn lt(self, b: Self) -> M<S> {
         M {
             s: self.s,
             m: self.s.less_than_f64s(self.v, b.v),
@@ -89,7 +97,7 @@ impl<S: Simd> F<S> {
     }
     /// Lanes where `self <= b` (false for NaN).
     #[inline(always)]
-    pub(crate) fn le(self, b: Self) -> M<S> {
+    pub fn le(self, b: Self) -> M<S> {
         M {
             s: self.s,
             m: self.s.less_than_or_equal_f64s(self.v, b.v),
@@ -97,7 +105,7 @@ impl<S: Simd> F<S> {
     }
     /// Lanes where `self == b` (false for NaN).
     #[inline(always)]
-    pub(crate) fn eq(self, b: Self) -> M<S> {
+    pub fn eq(self, b: Self) -> M<S> {
         M {
             s: self.s,
             m: self.s.equal_f64s(self.v, b.v),
@@ -105,7 +113,7 @@ impl<S: Simd> F<S> {
     }
     /// Lanes whose bits, as an unsigned integer, have `bits & mask == 0`.
     #[inline(always)]
-    pub(crate) fn bits_clear(self, mask: u64) -> M<S> {
+    pub fn bits_clear(self, mask: u64) -> M<S> {
         let s = self.s;
         let u = s.and_u64s(s.transmute_u64s_f64s(self.v), s.splat_u64s(mask));
         M {
@@ -115,7 +123,7 @@ impl<S: Simd> F<S> {
     }
     /// Lanes that are finite (not NaN, not ±∞): `self − self == 0` exactly there.
     #[inline(always)]
-    pub(crate) fn is_finite(self) -> M<S> {
+    pub fn is_finite(self) -> M<S> {
         (self - self).eq(Self::splat(self.s, 0.0))
     }
 }
@@ -123,7 +131,7 @@ impl<S: Simd> F<S> {
 impl<S: Simd> M<S> {
     /// `if self { a } else { b }`, lane by lane.
     #[inline(always)]
-    pub(crate) fn select(self, a: F<S>, b: F<S>) -> F<S> {
+    pub fn select(self, a: F<S>, b: F<S>) -> F<S> {
         F {
             s: self.s,
             v: self.s.select_f64s(self.m, a.v, b.v),
@@ -131,12 +139,12 @@ impl<S: Simd> M<S> {
     }
     /// Whether any lane is set.
     #[inline(always)]
-    pub(crate) fn any(self) -> bool {
+    pub fn any(self) -> bool {
         self.s.first_true_m64s(self.m) < S::F64_LANES
     }
     /// Lane-wise and.
     #[inline(always)]
-    pub(crate) fn and(self, b: Self) -> Self {
+    pub fn and(self, b: Self) -> Self {
         Self {
             s: self.s,
             m: self.s.and_m64s(self.m, b.m),
@@ -144,7 +152,7 @@ impl<S: Simd> M<S> {
     }
     /// Lane-wise negation.
     #[inline(always)]
-    pub(crate) fn not(self) -> Self {
+    pub fn not(self) -> Self {
         Self {
             s: self.s,
             m: self.s.not_m64s(self.m),

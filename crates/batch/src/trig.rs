@@ -69,7 +69,10 @@ fn kernels<S: Simd>(r: F<S>) -> (F<S>, F<S>) {
     let s = r.s;
     let c = |x: f64| F::splat(s, x);
     let z = r * r;
-    let ps = z.mul_add(z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)), c(S2));
+    let ps = z.mul_add(
+        z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)),
+        c(S2),
+    );
     let sin = (z * r).mul_add(z.mul_add(ps, c(S1)), r);
     // Below 2⁻²⁷, sin r = r correctly rounded; taking r there also keeps sin(−0) = −0 (the sum
     // above gives +0).
@@ -84,7 +87,10 @@ fn cos_kernel<S: Simd>(z: F<S>) -> F<S> {
     let s = z.s;
     let c = |x: f64| F::splat(s, x);
     let pc = z.mul_add(
-        z.mul_add(z.mul_add(z.mul_add(z.mul_add(c(C6), c(C5)), c(C4)), c(C3)), c(C2)),
+        z.mul_add(
+            z.mul_add(z.mul_add(z.mul_add(c(C6), c(C5)), c(C4)), c(C3)),
+            c(C2),
+        ),
         c(C1),
     );
     let hz = z * 0.5;
@@ -154,11 +160,16 @@ pub(crate) fn rodrigues_coefficients<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
     let s = t2.s;
     let c = |v: f64| F::splat(s, v);
     let z = t2 * 0.25;
-    let ps = z.mul_add(z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)), c(S2));
+    let ps = z.mul_add(
+        z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)),
+        c(S2),
+    );
     let q = z.mul_add(z.mul_add(ps, c(S1)), c(1.0)) * 0.5;
     let ch = cos_kernel(z);
     let (q, ch) = {
-        let near = z.le(c(core::f64::consts::FRAC_PI_4 * core::f64::consts::FRAC_PI_4));
+        let near = z.le(c(
+            core::f64::consts::FRAC_PI_4 * core::f64::consts::FRAC_PI_4
+        ));
         if near.not().any() {
             let t = t2.sqrt();
             let (sh, chg) = sin_cos(t * 0.5);
@@ -196,7 +207,12 @@ pub fn sin_cos_slices(
         #[inline(always)]
         fn with_simd<S: Simd>(self, s: S) {
             let w = S::F64_LANES;
-            for ((x, sn), cs) in self.0.chunks(w).zip(self.1.chunks_mut(w)).zip(self.2.chunks_mut(w)) {
+            for ((x, sn), cs) in self
+                .0
+                .chunks(w)
+                .zip(self.1.chunks_mut(w))
+                .zip(self.2.chunks_mut(w))
+            {
                 let (a, b) = sin_cos(F::load(s, x));
                 a.store(sn);
                 b.store(cs);

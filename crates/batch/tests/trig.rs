@@ -1,9 +1,7 @@
 //! The lanes' sin and cos against libm (glibc's, correctly rounded in practice) over the whole
 //! range, on every level, and the Rodrigues coefficients against their closed forms.
 
-use batch::trig::{
-    rodrigues_coefficients_lane, sin_cos_lane, sin_cos_slices, REDUCTION_LIMIT,
-};
+use batch::trig::{rodrigues_coefficients_lane, sin_cos_lane, sin_cos_slices, REDUCTION_LIMIT};
 use batch::Level;
 
 /// Distance in ulps between two doubles of the same sign (∞ for different signs).
@@ -42,7 +40,14 @@ fn arguments() -> Vec<f64> {
             xs.push(f64::from_bits((c.to_bits() as i64 + d) as u64));
         }
     }
-    xs.extend([0.0, -0.0, 5e-324, -5e-324, f64::MIN_POSITIVE, REDUCTION_LIMIT]);
+    xs.extend([
+        0.0,
+        -0.0,
+        5e-324,
+        -5e-324,
+        f64::MIN_POSITIVE,
+        REDUCTION_LIMIT,
+    ]);
     xs
 }
 
@@ -64,8 +69,14 @@ fn sin_cos_matches_libm_over_the_whole_range() {
         }
     }
     println!("worst ulps: sin {worst_s}, cos {worst_c}; worst absolute near zeros {worst_abs:e}");
-    assert!(worst_s <= 2 && worst_c <= 2, "sin {worst_s}, cos {worst_c} ulps");
-    assert!(worst_abs == 0.0, "absolute {worst_abs:e} where libm gives 0");
+    assert!(
+        worst_s <= 2 && worst_c <= 2,
+        "sin {worst_s}, cos {worst_c} ulps"
+    );
+    assert!(
+        worst_abs == 0.0,
+        "absolute {worst_abs:e} where libm gives 0"
+    );
     // signed zeros kept: sin(−0) = −0
     assert!(sin_cos_lane(-0.0).0.is_sign_negative() && sin_cos_lane(0.0).0.is_sign_positive());
 }

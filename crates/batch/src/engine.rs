@@ -1,0 +1,264 @@
+//! The machinery shared by the batched methods: lanes stored in groups of eight (structure of
+//! arrays within a group), the step loop with each lane's failure and monitoring, sequential or
+//! on the rayon pool, on any [`Level`].
+//!
+//! **Layout.** A lane's state is `K::COMPONENTS` doubles, followed by the bookkeeping of
+//! [`Book`]; the batch stores `⌈N/8⌉` groups, each `(COMPONENTS + BOOK) × 8` doubles with
+//! component c of lane l of the group at `c·8 + l`. Eight is the widest vector (AVX-512), so a
+//! group is one vector there, two on AVX2 and eight scalar lanes on the scalar level; the last
+//! group is padded with a benign body (Π = 0, R = I), whose results are never read. A remainder
+//! is therefore no separate code path: every lane, padding included, is the same kernel.
+//!
+//! **Order of work.** Groups are dealt out in blocks of [`BLOCK_GROUPS`] (128 lanes, a few
+//! kilobytes, so that a block stays in L1); within a block the loop is step-major (step k of
+//! every group, then step k + 1), so that the out-of-order core overlaps the independent vectors
+//! of one step instead of waiting on the dependency chain of one body; blocks run one after the
+//! other or on the rayon pool. None of this changes a lane's arithmetic.
+
+use crate::lanes::{F, M};
+use crate::{BatchError, Level};
+use integrators::ensemble::Execution;
+use pulp::{Simd, WithSimd};
+use rayon::prelude::*;
+
+/// Lanes per group: the widest vector.
+pub(crate) const GROUP: usize = 8;
+/// Groups per block of work.
+pub(crate) const BLOCK_GROUPS: usize = 16;
+
+/// The bookkeeping components of a lane, after its state.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Book {
+    /// 1 while the lane steps, 0 after a failed step, −1 for a lane refused at build.
+    Alive = 0,
+    /// Steps taken successfully.
+    Taken,
+    /// The lane's time (the sum of its steps, in order).
+    Time,
+    /// Energy and Casimir of the initial state.
+    E0,
+    C0,
+    /// Max |E − E₀| and |C − C₀| over the monitored states.
+    De,
+    Dc,
+}
+/// The number of bookkeeping components.
+pub(crate) const BOOK: usize = 7;
+
+/// A batched method: the arithmetic of one step on a vector of lanes, and its state's layout.
+/// Every function is applied lane-wise (no lane reads another).
+pub trait Kernel: Sync + Send + Clone {
+    /// Doubles of state per lane.
+    const COMPONENTS: usize;
+    /// The state of one vector of lanes, in registers.
+    type State<S: Simd>: Copy;
+    /// The method's name (as the scalar library names it).
+    fn name(&self) -> String;
+    /// A lane's stored state from its published momentum Π and attitude R (row-major); `None`
+    /// when the values cannot start a trajectory.
+    fn init_lane(&self, pi: [f64; 3], r: [f64; 9]) -> Option<Vec<f64>>;
+    /// The state of the lanes `off..off + S::F64_LANES` of a group.
+    fn load<S: Simd>(&self, s: S, group: &[f64], off: usize) -> Self::State<S>;
+    /// Writes the state back.
+    fn store<S: Simd>(&self, st: &Self::State<S>, group: &mut [f64], off: usize);
+    /// One step of size h in place; `renormalize` on the steps where the attitude is brought
+    /// back onto SO(3).
+    fn step<S: Simd>(&self, st: &mut Self::State<S>, h: f64, renormalize: bool);
+    /// `if m { a } else { b }` lane by lane.
+    fn select<S: Simd>(m: M<S>, a: &Self::State<S>, b: &Self::State<S>) -> Self::State<S>;
+    /// Lanes whose state is finite.
+    fn finite<S: Simd>(&self, st: &Self::State<S>) -> M<S>;
+    /// The published momentum Π and attitude R (row-major) of the state.
+    fn published<S: Simd>(&self, st: &Self::State<S>) -> ([F<S>; 3], [F<S>; 9]);
+    /// The energy and, where the system has one, the Casimir |Π|² of the published state.
+    fn observe<S: Simd>(&self, st: &Self::State<S>) -> (F<S>, Option<F<S>>);
+    /// Whether the system has a Casimir.
+    fn has_casimir(&self) -> bool;
+    /// Whether the method is symmetric (Ψ_{−h} = Ψ_h⁻¹), so that compositions raise its order.
+    fn symmetric(&self) -> bool;
+    /// The energy and Casimir of a lane's initial state, as the scalar method reads them before
+    /// its first step (by default the published state of [`Kernel::init_lane`], on one lane).
+    fn initial_observation(&self, pi: [f64; 3], r: [f64; 9]) -> (f64, Option<f64>) {
+        let Some(v) = self.init_lane(pi, r) else {
+            return (f64::NAN, None);
+        };
+        let mut group = vec![0.0; Self::COMPONENTS * GROUP];
+        for (c, x) in v.iter().enumerate() {
+            group[c * GROUP] = *x;
+        }
+        let st = self.load(pulp::Scalar, &group, 0);
+        let (e, c) = self.observe(&st);
+        (e.v, c.map(|c| c.v))
+    }
+    /// Whether the attitude is renormalized every [`crate::RENORMALIZE_EVERY`] steps (the
+    /// splittings), or kept on the group by the method itself (a unit quaternion).
+    fn renormalizes(&self) -> bool;
+    /// The scalar library's error for a lane refused at build, and for a failed step.
+    fn build_error(&self) -> integrators::IntegratorError;
+    /// See [`Kernel::build_error`].
+    fn step_error(&self) -> integrators::IntegratorError;
+}
+
+/// The layout of a batch's storage for kernel `K`.
+pub(crate) fn group_len<K: Kernel>() -> usize {
+    (K::COMPONENTS + BOOK) * GROUP
+}
+
+/// Index of bookkeeping component `b` of lane `l` in a group of kernel `K`.
+pub(crate) fn book_index<K: Kernel>(b: Book, l: usize) -> usize {
+    (K::COMPONENTS + b as usize) * GROUP + l
+}
+
+/// What one call of the step loop does.
+#[derive(Debug, Clone)]
+pub(crate) struct Schedule<'a> {
+    /// The sub-steps of one step (a composition's γᵢh; `[h]` otherwise).
+    pub subs: &'a [f64],
+    /// The outer step h (added to each lane's time).
+    pub h: f64,
+    /// Steps to take.
+    pub steps: u64,
+    /// Inner steps taken before this call (the renormalization cadence runs over inner steps).
+    pub inner_before: u64,
+    /// Monitor energy and Casimir after every this many steps (counted from the first step of
+    /// the batch: `outer_before`).
+    pub monitor_every: Option<u64>,
+    /// Outer steps taken before this call.
+    pub outer_before: u64,
+}
+
+/// Runs `schedule` on one block of groups.
+#[inline(always)]
+fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Schedule<'_>) {
+    let w = S::F64_LANES;
+    let glen = group_len::<K>();
+    let c = K::COMPONENTS;
+    let at = |b: Book| (c + b as usize) * GROUP;
+    let one = F::splat(s, 1.0);
+    for k in 0..sch.steps {
+        let outer = sch.outer_before + k + 1;
+        let monitor = sch.monitor_every.is_some_and(|m| outer % m == 0);
+        for group in block.chunks_exact_mut(glen) {
+            for off in (0..GROUP).step_by(w) {
+                let st = kernel.load(s, group, off);
+                let alive_v = F::load(s, &group[at(Book::Alive) + off..]);
+                let alive = alive_v.eq(one);
+                let mut new = st;
+                for (j, &hs) in sch.subs.iter().enumerate() {
+                    let inner = sch.inner_before + k * sch.subs.len() as u64 + j as u64 + 1;
+                    let renorm =
+                        kernel.renormalizes() && inner % crate::RENORMALIZE_EVERY as u64 == 0;
+                    kernel.step(&mut new, hs, renorm);
+                }
+                let ok = kernel.finite(&new).and(alive);
+                let st = K::select(ok, &new, &st);
+                kernel.store(&st, group, off);
+                // Dead lanes keep their bookkeeping; a lane that failed now is marked 0.
+                let zero = F::splat(s, 0.0);
+                alive
+                    .select(ok.select(one, zero), alive_v)
+                    .store(&mut group[at(Book::Alive) + off..at(Book::Alive) + off + w]);
+                let taken = F::load(s, &group[at(Book::Taken) + off..]);
+                ok.select(taken + 1.0, taken)
+                    .store(&mut group[at(Book::Taken) + off..at(Book::Taken) + off + w]);
+                let time = F::load(s, &group[at(Book::Time) + off..]);
+                ok.select(time + sch.h, time)
+                    .store(&mut group[at(Book::Time) + off..at(Book::Time) + off + w]);
+                if monitor {
+                    monitor_lanes(s, kernel, &st, ok, group, off);
+                }
+            }
+        }
+    }
+}
+
+/// Folds the published state's energy and Casimir errors into the lanes of `mask`.
+#[inline(always)]
+pub(crate) fn monitor_lanes<S: Simd, K: Kernel>(
+    s: S,
+    kernel: &K,
+    st: &K::State<S>,
+    mask: M<S>,
+    group: &mut [f64],
+    off: usize,
+) {
+    let w = S::F64_LANES;
+    let c = K::COMPONENTS;
+    let at = |b: Book| (c + b as usize) * GROUP + off;
+    let (e, cas) = kernel.observe(st);
+    let e0 = F::load(s, &group[at(Book::E0)..]);
+    let de = F::load(s, &group[at(Book::De)..]);
+    mask.select(de.max((e - e0).abs()), de)
+        .store(&mut group[at(Book::De)..at(Book::De) + w]);
+    if let Some(cas) = cas {
+        let c0 = F::load(s, &group[at(Book::C0)..]);
+        let dc = F::load(s, &group[at(Book::Dc)..]);
+        mask.select(dc.max((cas - c0).abs()), dc)
+            .store(&mut group[at(Book::Dc)..at(Book::Dc) + w]);
+    }
+}
+
+/// The step loop over all groups, on `level`, sequentially or on the rayon pool.
+pub(crate) fn run<K: Kernel>(
+    level: Level,
+    kernel: &K,
+    groups: &mut [f64],
+    schedule: &Schedule<'_>,
+    execution: Execution,
+) -> Result<(), BatchError> {
+    struct Op<'a, 'b, K: Kernel> {
+        kernel: &'a K,
+        block: &'a mut [f64],
+        schedule: &'a Schedule<'b>,
+    }
+    impl<K: Kernel> WithSimd for Op<'_, '_, K> {
+        type Output = ();
+        #[inline(always)]
+        fn with_simd<S: Simd>(self, s: S) {
+            run_block(s, self.kernel, self.block, self.schedule)
+        }
+    }
+    let block_len = BLOCK_GROUPS * group_len::<K>();
+    let one = |block: &mut [f64]| {
+        level.dispatch(Op {
+            kernel,
+            block,
+            schedule,
+        })
+    };
+    match execution {
+        Execution::Sequential => groups.chunks_mut(block_len).try_for_each(one),
+        Execution::Parallel => groups.par_chunks_mut(block_len).try_for_each(one),
+    }
+}
+
+/// Applies `f` to every group on `level` (not in the hot loop: reads, the initial monitor).
+pub(crate) fn for_each_vector<K: Kernel>(
+    level: Level,
+    kernel: &K,
+    groups: &mut [f64],
+    f: impl GroupFn<K>,
+) -> Result<(), BatchError> {
+    struct Op<'a, K: Kernel, G: GroupFn<K>> {
+        kernel: &'a K,
+        groups: &'a mut [f64],
+        f: G,
+    }
+    impl<K: Kernel, G: GroupFn<K>> WithSimd for Op<'_, K, G> {
+        type Output = ();
+        #[inline(always)]
+        fn with_simd<S: Simd>(self, s: S) {
+            for group in self.groups.chunks_exact_mut(group_len::<K>()) {
+                for off in (0..GROUP).step_by(S::F64_LANES) {
+                    self.f.apply(s, self.kernel, group, off);
+                }
+            }
+        }
+    }
+    level.dispatch(Op { kernel, groups, f })
+}
+
+/// A function of one vector of lanes of a group (a generic closure).
+pub(crate) trait GroupFn<K: Kernel> {
+    fn apply<S: Simd>(&self, s: S, kernel: &K, group: &mut [f64], off: usize);
+}
