@@ -41,6 +41,8 @@ pub struct Batch<K: Kernel> {
     composition: Option<CompositionScheme>,
     inner_steps: u64,
     outer_steps: u64,
+    /// The sum of the steps taken, in order (each lane's time while it runs).
+    time: f64,
     monitor_every: Option<u64>,
     execution: Execution,
 }
@@ -150,6 +152,7 @@ impl<K: Kernel> Batch<K> {
             composition: None,
             inner_steps: 0,
             outer_steps: 0,
+            time: 0.0,
             monitor_every: None,
             execution: Execution::Sequential,
         })
@@ -204,6 +207,10 @@ impl<K: Kernel> Batch<K> {
     pub fn steps(&self) -> u64 {
         self.outer_steps
     }
+    /// The time of the running bodies: the steps summed in order.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
 
     /// One step of size h for every running body.
     pub fn step(&mut self, h: f64) -> Result<(), BatchError> {
@@ -228,16 +235,15 @@ impl<K: Kernel> Batch<K> {
             inner_before: self.inner_steps,
             monitor_every: self.monitor_every,
             outer_before: self.outer_steps,
+            time_before: self.time,
         };
-        engine::run(
-            self.level,
-            &self.kernel,
-            &mut self.groups,
-            &schedule,
-            self.execution,
-        )?;
+        self.kernel
+            .run_schedule(self.level, &mut self.groups, &schedule, self.execution)?;
         self.outer_steps += steps;
         self.inner_steps += steps * subs.len() as u64;
+        for _ in 0..steps {
+            self.time += h;
+        }
         Ok(())
     }
 
@@ -315,11 +321,15 @@ impl<K: Kernel> Batch<K> {
                     LaneStatus::Invalid => Status::BuildFailed(self.kernel.build_error()),
                 };
                 let built = !matches!(status, Status::BuildFailed(_));
+                let (steps, time) = match status {
+                    Status::Completed => (self.outer_steps as usize, self.time),
+                    _ => (book(Book::Taken) as usize, book(Book::Time)),
+                };
                 Summary {
                     index: index(i),
                     status,
-                    steps: book(Book::Taken) as usize,
-                    time: book(Book::Time),
+                    steps,
+                    time,
                     momentum: built.then(|| published(&self.kernel, group, l).0),
                     initial_energy: if built { book(Book::E0) } else { f64::NAN },
                     max_energy_error: book(Book::De),

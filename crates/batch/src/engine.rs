@@ -15,7 +15,7 @@
 //! of one step instead of waiting on the dependency chain of one body; blocks run one after the
 //! other or on the rayon pool. None of this changes a lane's arithmetic.
 
-use crate::lanes::{F, M};
+use crate::lanes::{load_n, store_n, F, M};
 use crate::{BatchError, Level};
 use integrators::ensemble::Execution;
 use pulp::{Simd, WithSimd};
@@ -31,9 +31,9 @@ pub(crate) const BLOCK_GROUPS: usize = 16;
 pub(crate) enum Book {
     /// 1 while the lane steps, 0 after a failed step, −1 for a lane refused at build.
     Alive = 0,
-    /// Steps taken successfully.
+    /// Steps taken successfully, once the lane failed (a running lane has taken the batch's).
     Taken,
-    /// The lane's time (the sum of its steps, in order).
+    /// The lane's time once it failed (a running lane's is the batch's).
     Time,
     /// Energy and Casimir of the initial state.
     E0,
@@ -93,6 +93,17 @@ pub trait Kernel: Sync + Send + Clone {
     /// Whether the attitude is renormalized every [`crate::RENORMALIZE_EVERY`] steps (the
     /// splittings), or kept on the group by the method itself (a unit quaternion).
     fn renormalizes(&self) -> bool;
+    /// Runs the step loop of `schedule` over `groups` (the engine's [`run`]); a method with
+    /// variants (axes, a field) picks the one with its constants fixed here, once per run.
+    fn run_schedule(
+        &self,
+        level: Level,
+        groups: &mut [f64],
+        schedule: &Schedule<'_>,
+        execution: Execution,
+    ) -> Result<(), BatchError> {
+        run(level, self, groups, schedule, execution)
+    }
     /// The scalar library's error for a lane refused at build, and for a failed step.
     fn build_error(&self) -> integrators::IntegratorError;
     /// See [`Kernel::build_error`].
@@ -111,7 +122,7 @@ pub(crate) fn book_index<K: Kernel>(b: Book, l: usize) -> usize {
 
 /// What one call of the step loop does.
 #[derive(Debug, Clone)]
-pub(crate) struct Schedule<'a> {
+pub struct Schedule<'a> {
     /// The sub-steps of one step (a composition's γᵢh; `[h]` otherwise).
     pub subs: &'a [f64],
     /// The outer step h (added to each lane's time).
@@ -125,6 +136,8 @@ pub(crate) struct Schedule<'a> {
     pub monitor_every: Option<u64>,
     /// Outer steps taken before this call.
     pub outer_before: u64,
+    /// The time before this call.
+    pub time_before: f64,
 }
 
 /// Runs `schedule` on one block of groups.
@@ -133,42 +146,70 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
     let w = S::F64_LANES;
     let glen = group_len::<K>();
     let c = K::COMPONENTS;
-    let at = |b: Book| (c + b as usize) * GROUP;
     let one = F::splat(s, 1.0);
+    // The time before each step, as the scalar integrators sum it (t += h).
+    let mut time = sch.time_before;
     for k in 0..sch.steps {
         let outer = sch.outer_before + k + 1;
-        let monitor = sch.monitor_every.is_some_and(|m| outer % m == 0);
+        let monitor = sch.monitor_every.is_some_and(|m| outer.is_multiple_of(m));
         for group in block.chunks_exact_mut(glen) {
             for off in (0..GROUP).step_by(w) {
                 let st = kernel.load(s, group, off);
-                let alive_v = F::load(s, &group[at(Book::Alive) + off..]);
-                let alive = alive_v.eq(one);
+                let alive = F::load(s, &group[(c + Book::Alive as usize) * GROUP + off..]).eq(one);
                 let mut new = st;
-                for (j, &hs) in sch.subs.iter().enumerate() {
-                    let inner = sch.inner_before + k * sch.subs.len() as u64 + j as u64 + 1;
-                    let renorm =
-                        kernel.renormalizes() && inner % crate::RENORMALIZE_EVERY as u64 == 0;
-                    kernel.step(&mut new, hs, renorm);
+                let inner0 = sch.inner_before + k * sch.subs.len() as u64;
+                let every = crate::RENORMALIZE_EVERY as u64;
+                let renorms = kernel.renormalizes();
+                if let [h] = sch.subs {
+                    // One sub-step (no composition): straight-line code.
+                    kernel.step(&mut new, *h, renorms && (inner0 + 1).is_multiple_of(every));
+                } else {
+                    for (j, &hs) in sch.subs.iter().enumerate() {
+                        let renorm = renorms && (inner0 + j as u64 + 1).is_multiple_of(every);
+                        kernel.step(&mut new, hs, renorm);
+                    }
                 }
                 let ok = kernel.finite(&new).and(alive);
                 let st = K::select(ok, &new, &st);
                 kernel.store(&st, group, off);
-                // Dead lanes keep their bookkeeping; a lane that failed now is marked 0.
-                let zero = F::splat(s, 0.0);
-                alive
-                    .select(ok.select(one, zero), alive_v)
-                    .store(&mut group[at(Book::Alive) + off..at(Book::Alive) + off + w]);
-                let taken = F::load(s, &group[at(Book::Taken) + off..]);
-                ok.select(taken + 1.0, taken)
-                    .store(&mut group[at(Book::Taken) + off..at(Book::Taken) + off + w]);
-                let time = F::load(s, &group[at(Book::Time) + off..]);
-                ok.select(time + sch.h, time)
-                    .store(&mut group[at(Book::Time) + off..at(Book::Time) + off + w]);
+                let failed = alive.and(ok.not());
+                if failed.any() {
+                    record_failure(s, failed, group, c, off, outer - 1, time);
+                }
                 if monitor {
                     monitor_lanes(s, kernel, &st, ok, group, off);
                 }
             }
         }
+        time += sch.h;
+    }
+}
+
+/// Marks the lanes of `failed` as failed at step `step` (0-based) at time `time`: the steps they
+/// took and the time they reached (a cold path).
+#[cold]
+#[inline(never)]
+fn record_failure<S: Simd>(
+    s: S,
+    failed: M<S>,
+    group: &mut [f64],
+    components: usize,
+    off: usize,
+    step: u64,
+    time: f64,
+) {
+    let w = S::F64_LANES;
+    let at = |b: Book| (components + b as usize) * GROUP;
+    for (b, v) in [
+        (Book::Alive, 0.0),
+        (Book::Taken, step as f64),
+        (Book::Time, time),
+    ] {
+        let i = at(b) + off;
+        let old = F::load(s, &group[i..]);
+        failed
+            .select(F::splat(s, v), old)
+            .store(&mut group[i..i + w]);
     }
 }
 
@@ -182,20 +223,16 @@ pub(crate) fn monitor_lanes<S: Simd, K: Kernel>(
     group: &mut [f64],
     off: usize,
 ) {
-    let w = S::F64_LANES;
     let c = K::COMPONENTS;
-    let at = |b: Book| (c + b as usize) * GROUP + off;
     let (e, cas) = kernel.observe(st);
-    let e0 = F::load(s, &group[at(Book::E0)..]);
-    let de = F::load(s, &group[at(Book::De)..]);
-    mask.select(de.max((e - e0).abs()), de)
-        .store(&mut group[at(Book::De)..at(Book::De) + w]);
+    let [e0, _c0, de, dc] = load_n(s, group, c + Book::E0 as usize, off);
+    let mut out = [de, dc];
+    out[0] = mask.select(de.max((e - e0).abs()), de);
     if let Some(cas) = cas {
-        let c0 = F::load(s, &group[at(Book::C0)..]);
-        let dc = F::load(s, &group[at(Book::Dc)..]);
-        mask.select(dc.max((cas - c0).abs()), dc)
-            .store(&mut group[at(Book::Dc)..at(Book::Dc) + w]);
+        let [c0] = load_n(s, group, c + Book::C0 as usize, off);
+        out[1] = mask.select(dc.max((cas - c0).abs()), dc);
     }
+    store_n(&out, group, c + Book::De as usize, off);
 }
 
 /// The step loop over all groups, on `level`, sequentially or on the rayon pool.

@@ -37,18 +37,31 @@ impl<S: Simd> F<S> {
     /// The lanes of `lanes[..S::F64_LANES]`; missing entries (a shorter slice) are 0.
     #[inline(always)]
     pub fn load(s: S, lanes: &[f64]) -> Self {
+        let w = S::F64_LANES;
+        if lanes.len() >= w {
+            // A fixed-size read: one unaligned vector load.
+            return Self {
+                s,
+                v: bytemuck::pod_read_unaligned(bytemuck::cast_slice(&lanes[..w])),
+            };
+        }
         let mut v: S::f64s = bytemuck::Zeroable::zeroed();
         let dst: &mut [f64] = bytemuck::cast_slice_mut(core::slice::from_mut(&mut v));
-        let n = dst.len().min(lanes.len());
-        dst[..n].copy_from_slice(&lanes[..n]);
+        dst[..lanes.len()].copy_from_slice(lanes);
         Self { s, v }
     }
     /// Writes the first `out.len()` lanes (at most all of them) to `out`.
     #[inline(always)]
     pub fn store(self, out: &mut [f64]) {
         let src: &[f64] = bytemuck::cast_slice(core::slice::from_ref(&self.v));
-        let n = src.len().min(out.len());
-        out[..n].copy_from_slice(&src[..n]);
+        let w = S::F64_LANES;
+        if out.len() >= w {
+            // A fixed-size write: one unaligned vector store.
+            out[..w].copy_from_slice(&src[..w]);
+            return;
+        }
+        let n = out.len();
+        out.copy_from_slice(&src[..n]);
     }
     /// The lanes as an array view.
     #[inline(always)]
@@ -120,11 +133,6 @@ impl<S: Simd> F<S> {
             s,
             m: s.equal_u64s(u, s.splat_u64s(0)),
         }
-    }
-    /// Lanes that are finite (not NaN, not ±∞): `self − self == 0` exactly there.
-    #[inline(always)]
-    pub fn is_finite(self) -> M<S> {
-        (self - self).eq(Self::splat(self.s, 0.0))
     }
 }
 
@@ -202,4 +210,76 @@ impl<S: Simd> Neg for F<S> {
             ),
         }
     }
+}
+
+/// Every lane `x` (shorthand of [`F::splat`] for the kernels' constants).
+#[inline(always)]
+pub fn k<S: Simd>(s: S, x: f64) -> F<S> {
+    F::splat(s, x)
+}
+
+/// `[F::splat(s, aᵢ)]`.
+#[inline(always)]
+pub fn splat_n<S: Simd, const N: usize>(s: S, a: [f64; N]) -> [F<S>; N] {
+    let mut o = [F::splat(s, 0.0); N];
+    for i in 0..N {
+        o[i] = F::splat(s, a[i]);
+    }
+    o
+}
+
+/// Components `first .. first + N` of the lanes `off ..` of a group (component c of lane l at
+/// `c·8 + l`).
+#[inline(always)]
+pub fn load_n<S: Simd, const N: usize>(s: S, group: &[f64], first: usize, off: usize) -> [F<S>; N] {
+    let mut o = [F::splat(s, 0.0); N];
+    for i in 0..N {
+        o[i] = F::load(s, &group[(first + i) * crate::engine::GROUP + off..]);
+    }
+    o
+}
+
+/// Writes components `first .. first + N` of the lanes `off ..` of a group.
+#[inline(always)]
+pub fn store_n<S: Simd, const N: usize>(
+    a: &[F<S>; N],
+    group: &mut [f64],
+    first: usize,
+    off: usize,
+) {
+    let w = S::F64_LANES;
+    for (i, v) in a.iter().enumerate() {
+        let at = (first + i) * crate::engine::GROUP + off;
+        v.store(&mut group[at..at + w]);
+    }
+}
+
+/// `if m { aᵢ } else { bᵢ }`.
+#[inline(always)]
+pub fn select_n<S: Simd, const N: usize>(m: M<S>, a: &[F<S>; N], b: &[F<S>; N]) -> [F<S>; N] {
+    let mut o = *a;
+    for i in 0..N {
+        o[i] = m.select(a[i], b[i]);
+    }
+    o
+}
+
+/// `aᵢ + bᵢ t` (a product and a sum: no fused multiply-add).
+#[inline(always)]
+pub fn axpy_n<S: Simd, const N: usize>(a: &[F<S>; N], b: &[F<S>; N], t: f64) -> [F<S>; N] {
+    let mut o = *a;
+    for i in 0..N {
+        o[i] = a[i] + b[i] * t;
+    }
+    o
+}
+
+/// `aᵢ t`.
+#[inline(always)]
+pub fn scale_n<S: Simd, const N: usize>(a: &[F<S>; N], t: f64) -> [F<S>; N] {
+    let mut o = *a;
+    for i in 0..N {
+        o[i] = a[i] * t;
+    }
+    o
 }

@@ -2,7 +2,7 @@
 //! `integrators::baselines::QuaternionRk4`.
 
 use crate::engine::Kernel;
-use crate::lanes::{F, M};
+use crate::lanes::{axpy_n, load_n, scale_n, select_n, splat_n, store_n, F, M};
 use crate::splitting::finite_all;
 use crate::BodyModel;
 use integrators::IntegratorError;
@@ -75,8 +75,8 @@ fn vertical<S: Simd>(q: [F<S>; 4]) -> [F<S>; 3] {
 /// `Γ × m g χ` as the scalar step forms it: `−(m g χ × Γ)`.
 #[inline(always)]
 fn field_force<S: Simd>(arm: [f64; 3], g: [F<S>; 3]) -> [F<S>; 3] {
-    let m = arm.map(|a| F::splat(g[0].s, a));
-    cross(m, g).map(|f| -f)
+    let f = cross(splat_n(g[0].s, arm), g);
+    [-f[0], -f[1], -f[2]]
 }
 
 impl QuaternionRk4 {
@@ -100,7 +100,7 @@ impl QuaternionRk4 {
             w * ry - x * rz + y * rw + z * rx,
             w * rz + x * ry - y * rx + z * rw,
         ];
-        (p.map(|c| c * 0.5), dpi)
+        (scale_n(&p, 0.5), dpi)
     }
     /// The energy `½ Π·Ω (+ m g χ·Γ)` and Casimir |Π|² as the scalar `System` forms them.
     #[inline(always)]
@@ -134,46 +134,47 @@ impl Kernel for QuaternionRk4 {
     }
     #[inline(always)]
     fn load<S: Simd>(&self, s: S, group: &[f64], off: usize) -> Rk4State<S> {
-        let c = |i: usize| F::load(s, &group[i * crate::engine::GROUP + off..]);
         Rk4State {
-            q: [c(0), c(1), c(2), c(3)],
-            pi: [c(4), c(5), c(6)],
+            q: load_n(s, group, 0, off),
+            pi: load_n(s, group, 4, off),
         }
     }
     #[inline(always)]
     fn store<S: Simd>(&self, st: &Rk4State<S>, group: &mut [f64], off: usize) {
-        let w = S::F64_LANES;
-        for (i, v) in st.q.iter().chain(&st.pi).enumerate() {
-            let at = i * crate::engine::GROUP + off;
-            v.store(&mut group[at..at + w]);
-        }
+        store_n(&st.q, group, 0, off);
+        store_n(&st.pi, group, 4, off);
     }
     #[inline(always)]
     fn step<S: Simd>(&self, st: &mut Rk4State<S>, h: f64, _renormalize: bool) {
         let half = 0.5 * h;
-        let add4 = |a: [F<S>; 4], b: [F<S>; 4], t: f64| core::array::from_fn(|i| a[i] + b[i] * t);
-        let add3 = |a: [F<S>; 3], b: [F<S>; 3], t: f64| core::array::from_fn(|i| a[i] + b[i] * t);
         let (q, pi) = (st.q, st.pi);
         let (l1, k1) = self.rate(q, pi);
-        let (l2, k2) = self.rate(add4(q, l1, half), add3(pi, k1, half));
-        let (l3, k3) = self.rate(add4(q, l2, half), add3(pi, k2, half));
-        let (l4, k4) = self.rate(add4(q, l3, h), add3(pi, k3, h));
+        let (l2, k2) = self.rate(axpy_n(&q, &l1, half), axpy_n(&pi, &k1, half));
+        let (l3, k3) = self.rate(axpy_n(&q, &l2, half), axpy_n(&pi, &k2, half));
+        let (l4, k4) = self.rate(axpy_n(&q, &l3, h), axpy_n(&pi, &k3, h));
         let h6 = h / 6.0;
-        let q1: [F<S>; 4] =
-            core::array::from_fn(|i| q[i] + (l1[i] + (l2[i] + l3[i]) * 2.0 + l4[i]) * h6);
-        let pi1: [F<S>; 3] =
-            core::array::from_fn(|i| pi[i] + (k1[i] + (k2[i] + k3[i]) * 2.0 + k4[i]) * h6);
+        let mut q1 = q;
+        for i in 0..4 {
+            q1[i] = q[i] + (l1[i] + (l2[i] + l3[i]) * 2.0 + l4[i]) * h6;
+        }
+        let mut pi1 = pi;
+        for i in 0..3 {
+            pi1[i] = pi[i] + (k1[i] + (k2[i] + k3[i]) * 2.0 + k4[i]) * h6;
+        }
         // |q| as nalgebra's 4-vector norm: coordinates (x, y, z, w), (x² + z²) + (y² + w²).
         let [w, x, y, z] = q1;
         let n = ((x * x + z * z) + (y * y + w * w)).sqrt();
-        st.q = q1.map(|c| c / n);
+        for c in q1.iter_mut() {
+            *c = *c / n;
+        }
+        st.q = q1;
         st.pi = pi1;
     }
     #[inline(always)]
     fn select<S: Simd>(m: M<S>, a: &Rk4State<S>, b: &Rk4State<S>) -> Rk4State<S> {
         Rk4State {
-            q: core::array::from_fn(|i| m.select(a.q[i], b.q[i])),
-            pi: core::array::from_fn(|i| m.select(a.pi[i], b.pi[i])),
+            q: select_n(m, &a.q, &b.q),
+            pi: select_n(m, &a.pi, &b.pi),
         }
     }
     #[inline(always)]
@@ -203,7 +204,11 @@ impl Kernel for QuaternionRk4 {
     }
     #[inline(always)]
     fn observe<S: Simd>(&self, st: &Rk4State<S>) -> (F<S>, Option<F<S>>) {
-        let g = self.body.field.map(|_| vertical(st.q));
+        let g = if self.body.field.is_some() {
+            Some(vertical(st.q))
+        } else {
+            None
+        };
         self.energy(st.pi, g)
     }
     fn has_casimir(&self) -> bool {
@@ -219,8 +224,8 @@ impl Kernel for QuaternionRk4 {
     /// step, not at R(q₀).
     fn initial_observation(&self, pi: [f64; 3], r: [f64; 9]) -> (f64, Option<f64>) {
         let s = pulp::Scalar;
-        let p = pi.map(|x| F::splat(s, x));
-        let g = [r[6], r[7], r[8]].map(|x| F::splat(s, x));
+        let p = splat_n(s, pi);
+        let g = splat_n(s, [r[6], r[7], r[8]]);
         let (e, c) = self.energy(p, Some(g));
         (e.v, c.map(|c| c.v))
     }

@@ -1,9 +1,10 @@
 //! The Strang splitting of the free rigid body and of a body in a uniform field, on lanes.
 
-use crate::engine::Kernel;
-use crate::lanes::{F, M};
+use crate::engine::{self, Kernel, Schedule};
+use crate::lanes::{load_n, scale_n, select_n, splat_n, store_n, F, M};
 use crate::trig::{rodrigues_coefficients, sin_cos};
-use crate::BodyModel;
+use crate::{BatchError, BodyModel, Level};
+use integrators::ensemble::Execution;
 use integrators::IntegratorError;
 use pulp::Simd;
 
@@ -119,9 +120,7 @@ fn compose_exp<S: Simd>(r: &mut [F<S>; 9], w: [F<S>; 3]) {
 /// order.
 #[inline(always)]
 fn normalize<S: Simd>(r: &mut [F<S>; 9]) {
-    let col = |j: usize| [r[j], r[3 + j], r[6 + j]];
-    let dot = |u: [F<S>; 3], v: [F<S>; 3]| u[2].mul_add(v[2], u[1].mul_add(v[1], u[0] * v[0]));
-    let (c0, c1, c2) = (col(0), col(1), col(2));
+    let (c0, c1, c2) = ([r[0], r[3], r[6]], [r[1], r[4], r[7]], [r[2], r[5], r[8]]);
     let h = F::splat(r[0].s, -0.5);
     let t = F::splat(r[0].s, 1.5);
     let (d01, d02, d12) = (h * dot(c0, c1), h * dot(c0, c2), h * dot(c1, c2));
@@ -139,6 +138,12 @@ fn normalize<S: Simd>(r: &mut [F<S>; 9]) {
     compose_matrix(r, &corr);
 }
 
+/// `u · v` in fused multiply-adds.
+#[inline(always)]
+fn dot<S: Simd>(u: [F<S>; 3], v: [F<S>; 3]) -> F<S> {
+    u[2].mul_add(v[2], u[1].mul_add(v[1], u[0] * v[0]))
+}
+
 /// `R ← R M`.
 #[inline(always)]
 fn compose_matrix<S: Simd>(r: &mut [F<S>; 9], m: &[F<S>; 9]) {
@@ -154,51 +159,76 @@ fn compose_matrix<S: Simd>(r: &mut [F<S>; 9], m: &[F<S>; 9]) {
 #[inline(always)]
 fn kick<S: Simd>(st: &mut StrangState<S>, arm: [f64; 3], t: F<S>) {
     let s = t.s;
-    let m = arm.map(|x| F::splat(s, x));
+    let m = splat_n(s, arm);
     let g = [st.r[6], st.r[7], st.r[8]];
     let f = [
         g[1].mul_add(m[2], -(g[2] * m[1])),
         g[2].mul_add(m[0], -(g[0] * m[2])),
         g[0].mul_add(m[1], -(g[1] * m[0])),
     ];
-    for i in 0..3 {
-        st.pi[i] = f[i].mul_add(t, st.pi[i]);
+    for (p, f) in st.pi.iter_mut().zip(f) {
+        *p = f.mul_add(t, *p);
     }
 }
 
+/// One Strang step with the split axes p, s and the presence of a field as constants (their
+/// plane coordinates are then fixed offsets, and the step one straight line of code).
+#[inline(always)]
+fn strang_step<S: Simd, const P: usize, const Q: usize, const FIELD: bool>(
+    body: &BodyModel,
+    st: &mut StrangState<S>,
+    h: f64,
+    renormalize: bool,
+) {
+    let s = st.lag.s;
+    let [inv_r, rate_p, rate_s] = body.split_rates;
+    let arm = body.field.unwrap_or([0.0; 3]);
+    let half = F::splat(s, 0.5 * h);
+    let opening = st.lag + half;
+    let full = F::splat(s, h);
+    if FIELD {
+        kick(st, arm, opening);
+        turn::<S, P>(st, rate_p, half);
+    } else {
+        turn::<S, P>(st, rate_p, opening);
+    }
+    // φ¹_h: R exp(hΠ/I_r) from the Π before the turn about a_s, then the turn.
+    let w = scale_n(&st.pi, h * inv_r);
+    compose_exp(&mut st.r, w);
+    turn::<S, Q>(st, rate_s, full);
+    if FIELD {
+        turn::<S, P>(st, rate_p, half);
+    }
+    st.lag = half;
+    if renormalize {
+        normalize(&mut st.r);
+    }
+}
+
+/// [`Strang`] with its axes and field fixed at compile time: what the step loop runs
+/// ([`Kernel::run_schedule`] picks the variant once per run).
+#[derive(Debug, Clone)]
+pub struct StrangFixed<const P: usize, const Q: usize, const FIELD: bool>(Strang);
+
 impl Strang {
-    /// One step with the split axes p, s as constants (their plane coordinates are then fixed
-    /// offsets).
+    /// One step, the variant chosen at run time (reads and tests; the loop runs
+    /// [`StrangFixed`]).
     #[inline(always)]
-    fn step_axes<S: Simd, const P: usize, const Q: usize>(
-        &self,
-        st: &mut StrangState<S>,
-        h: f64,
-        renormalize: bool,
-    ) {
-        let s = st.lag.s;
-        let [inv_r, rate_p, rate_s] = self.body.split_rates;
-        let half = F::splat(s, 0.5 * h);
-        let opening = st.lag + half;
-        let full = F::splat(s, h);
-        match self.body.field {
-            Some(arm) => {
-                kick(st, arm, opening);
-                turn::<S, P>(st, rate_p, half);
-            }
-            None => turn::<S, P>(st, rate_p, opening),
+    fn step_any<S: Simd>(&self, st: &mut StrangState<S>, h: f64, renormalize: bool) {
+        let b = &self.body;
+        macro_rules! arms {
+            ($($p:literal, $q:literal);*) => {
+                match (b.split_axes[1], b.split_axes[2], b.field.is_some()) {
+                    $(
+                        ($p, $q, false) => strang_step::<S, $p, $q, false>(b, st, h, renormalize),
+                        ($p, $q, true) => strang_step::<S, $p, $q, true>(b, st, h, renormalize),
+                    )*
+                    (_, _, false) => strang_step::<S, 2, 1, false>(b, st, h, renormalize),
+                    (_, _, true) => strang_step::<S, 2, 1, true>(b, st, h, renormalize),
+                }
+            };
         }
-        // φ¹_h: R exp(hΠ/I_r) from the Π before the turn about a_s, then the turn.
-        let w = st.pi.map(|p| p * (h * inv_r));
-        compose_exp(&mut st.r, w);
-        turn::<S, Q>(st, rate_s, full);
-        if self.body.field.is_some() {
-            turn::<S, P>(st, rate_p, half);
-        }
-        st.lag = half;
-        if renormalize {
-            normalize(&mut st.r);
-        }
+        arms!(0, 1; 0, 2; 1, 0; 1, 2; 2, 0)
     }
 
     /// The published state: the stored one advanced by the closing outer flow of its lag.
@@ -239,44 +269,50 @@ impl Kernel for Strang {
     }
     #[inline(always)]
     fn load<S: Simd>(&self, s: S, group: &[f64], off: usize) -> StrangState<S> {
-        let c = |i: usize| F::load(s, &group[i * crate::engine::GROUP + off..]);
+        let [lag] = load_n(s, group, 12, off);
         StrangState {
-            pi: [c(0), c(1), c(2)],
-            r: core::array::from_fn(|i| c(3 + i)),
-            lag: c(12),
+            pi: load_n(s, group, 0, off),
+            r: load_n(s, group, 3, off),
+            lag,
         }
     }
     #[inline(always)]
     fn store<S: Simd>(&self, st: &StrangState<S>, group: &mut [f64], off: usize) {
-        let w = S::F64_LANES;
-        let mut put = |i: usize, v: F<S>| {
-            let at = i * crate::engine::GROUP + off;
-            v.store(&mut group[at..at + w])
-        };
-        for i in 0..3 {
-            put(i, st.pi[i]);
-        }
-        for i in 0..9 {
-            put(3 + i, st.r[i]);
-        }
-        put(12, st.lag);
+        store_n(&st.pi, group, 0, off);
+        store_n(&st.r, group, 3, off);
+        store_n(&[st.lag], group, 12, off);
     }
     #[inline(always)]
     fn step<S: Simd>(&self, st: &mut StrangState<S>, h: f64, renormalize: bool) {
-        match (self.body.split_axes[1], self.body.split_axes[2]) {
-            (0, 1) => self.step_axes::<S, 0, 1>(st, h, renormalize),
-            (0, 2) => self.step_axes::<S, 0, 2>(st, h, renormalize),
-            (1, 0) => self.step_axes::<S, 1, 0>(st, h, renormalize),
-            (1, 2) => self.step_axes::<S, 1, 2>(st, h, renormalize),
-            (2, 0) => self.step_axes::<S, 2, 0>(st, h, renormalize),
-            _ => self.step_axes::<S, 2, 1>(st, h, renormalize),
+        self.step_any(st, h, renormalize)
+    }
+    fn run_schedule(
+        &self,
+        level: Level,
+        groups: &mut [f64],
+        schedule: &Schedule<'_>,
+        execution: Execution,
+    ) -> Result<(), BatchError> {
+        let b = &self.body;
+        macro_rules! arms {
+            ($($p:literal, $q:literal);*) => {
+                match (b.split_axes[1], b.split_axes[2], b.field.is_some()) {
+                    $(
+                        ($p, $q, false) => engine::run(level, &StrangFixed::<$p, $q, false>(self.clone()), groups, schedule, execution),
+                        ($p, $q, true) => engine::run(level, &StrangFixed::<$p, $q, true>(self.clone()), groups, schedule, execution),
+                    )*
+                    (_, _, false) => engine::run(level, &StrangFixed::<2, 1, false>(self.clone()), groups, schedule, execution),
+                    (_, _, true) => engine::run(level, &StrangFixed::<2, 1, true>(self.clone()), groups, schedule, execution),
+                }
+            };
         }
+        arms!(0, 1; 0, 2; 1, 0; 1, 2; 2, 0)
     }
     #[inline(always)]
     fn select<S: Simd>(m: M<S>, a: &StrangState<S>, b: &StrangState<S>) -> StrangState<S> {
         StrangState {
-            pi: core::array::from_fn(|i| m.select(a.pi[i], b.pi[i])),
-            r: core::array::from_fn(|i| m.select(a.r[i], b.r[i])),
+            pi: select_n(m, &a.pi, &b.pi),
+            r: select_n(m, &a.r, &b.r),
             lag: m.select(a.lag, b.lag),
         }
     }
@@ -301,7 +337,7 @@ impl Kernel for Strang {
         let kinetic = two_h * 0.5;
         match self.body.field {
             Some(m) => {
-                let m = m.map(|x| F::splat(p.r[0].s, x));
+                let m = splat_n(p.r[0].s, m);
                 let v = p.r[8].mul_add(m[2], p.r[7].mul_add(m[1], p.r[6] * m[0]));
                 (kinetic + v, None)
             }
@@ -332,20 +368,76 @@ impl Kernel for Strang {
     }
 }
 
-/// Lanes where every entry of Π and R is finite: `x · 0 = 0` exactly for finite x and NaN
-/// otherwise, summed in two chains.
+/// Lanes where every entry of `a` and `b` is finite: `x · 0 = 0` exactly for finite x and NaN
+/// otherwise, summed in two chains (fixed-length loops, unrolled: the state stays in registers).
 #[inline(always)]
-pub(crate) fn finite_all<S: Simd>(pi: &[F<S>], r: &[F<S>]) -> M<S> {
-    let s = pi[0].s;
+pub(crate) fn finite_all<S: Simd, const A: usize, const B: usize>(
+    a: &[F<S>; A],
+    b: &[F<S>; B],
+) -> M<S> {
+    let s = a[0].s;
     let zero = F::splat(s, 0.0);
-    let mut a = zero;
-    let mut b = zero;
-    for (i, &x) in pi.iter().chain(r).enumerate() {
-        if i % 2 == 0 {
-            a = x.mul_add(zero, a);
-        } else {
-            b = x.mul_add(zero, b);
-        }
+    let mut x = zero;
+    for v in a {
+        x = v.mul_add(zero, x);
     }
-    (a + b).eq(zero)
+    let mut y = zero;
+    for v in b {
+        y = v.mul_add(zero, y);
+    }
+    (x + y).eq(zero)
+}
+
+impl<const P: usize, const Q: usize, const FIELD: bool> Kernel for StrangFixed<P, Q, FIELD> {
+    const COMPONENTS: usize = Strang::COMPONENTS;
+    type State<S: Simd> = StrangState<S>;
+    fn name(&self) -> String {
+        self.0.name()
+    }
+    fn init_lane(&self, pi: [f64; 3], r: [f64; 9]) -> Option<Vec<f64>> {
+        self.0.init_lane(pi, r)
+    }
+    #[inline(always)]
+    fn load<S: Simd>(&self, s: S, group: &[f64], off: usize) -> StrangState<S> {
+        self.0.load(s, group, off)
+    }
+    #[inline(always)]
+    fn store<S: Simd>(&self, st: &StrangState<S>, group: &mut [f64], off: usize) {
+        self.0.store(st, group, off)
+    }
+    #[inline(always)]
+    fn step<S: Simd>(&self, st: &mut StrangState<S>, h: f64, renormalize: bool) {
+        strang_step::<S, P, Q, FIELD>(&self.0.body, st, h, renormalize)
+    }
+    #[inline(always)]
+    fn select<S: Simd>(m: M<S>, a: &StrangState<S>, b: &StrangState<S>) -> StrangState<S> {
+        Strang::select(m, a, b)
+    }
+    #[inline(always)]
+    fn finite<S: Simd>(&self, st: &StrangState<S>) -> M<S> {
+        self.0.finite(st)
+    }
+    #[inline(always)]
+    fn published<S: Simd>(&self, st: &StrangState<S>) -> ([F<S>; 3], [F<S>; 9]) {
+        self.0.published(st)
+    }
+    #[inline(always)]
+    fn observe<S: Simd>(&self, st: &StrangState<S>) -> (F<S>, Option<F<S>>) {
+        self.0.observe(st)
+    }
+    fn has_casimir(&self) -> bool {
+        self.0.has_casimir()
+    }
+    fn symmetric(&self) -> bool {
+        true
+    }
+    fn renormalizes(&self) -> bool {
+        true
+    }
+    fn build_error(&self) -> IntegratorError {
+        self.0.build_error()
+    }
+    fn step_error(&self) -> IntegratorError {
+        self.0.step_error()
+    }
 }

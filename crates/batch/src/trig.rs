@@ -14,20 +14,22 @@
 //! magnitude), the two later terms round once each, so r carries a relative error of about two
 //! roundings while |n P₃| stays far below the smallest |r| a double reaches, which holds for
 //! |x| ≤ [`REDUCTION_LIMIT`] = 2²⁸. The quadrant n mod 4 then swaps and negates the kernels.
-//! Lanes beyond the limit, ±∞ and NaN are computed by libm's `sin_cos` one by one (a cold path;
-//! ±∞ and NaN give NaN, as libm does).
+//! Beyond the limit (and for ±∞, NaN) the result is NaN: a body whose step turns it by more than
+//! 2²⁸ rad about one axis fails (its status says so) instead of being handed to libm — a call
+//! in the middle of the step would make the compiler keep the whole state in memory around it.
+//! The scalar library takes libm there; no physical step turns a body 4·10⁷ times.
 //!
-//! **Accuracy** (test `sin_cos_matches_libm_over_the_whole_range`): within 2 ulp of glibc's
-//! correctly rounded sin and cos on [−2²⁸, 2²⁸] (sampled densely near 0, on [−2π, 2π] and
-//! logarithmically beyond); where the result is tiny (cos near an odd multiple of π/2), within
-//! an absolute 2·2⁻⁵³ (the reduction's error, a few ulp of the reduced argument).
+//! **Accuracy** (test `sin_cos_matches_libm_over_the_whole_range`): within 1 ulp of glibc's
+//! (correctly rounded in practice) sin and cos on [−2²⁸, 2²⁸], sampled densely near 0, on
+//! [−2π, 2π], within 3 ulps of the multiples of π/2 up to 1000π, and logarithmically from 10⁻³⁰⁰
+//! to 2²⁸; sin(±0) = ±0.
 //!
 //! **One path, every width.** When no lane needs the reduction (`n = 0` in every lane) the kernels
 //! are evaluated on x itself; on the other path the lanes with n = 0 take x itself as the reduced
 //! argument (a select) and the quadrant step leaves them alone, so a lane's bits are the same
 //! whichever path its neighbours sent the vector on (test `a_lane_does_not_depend_on_its_neighbours`).
 
-use crate::lanes::{F, M};
+use crate::lanes::{k, F};
 use crate::{BatchError, Level};
 use pulp::{Simd, WithSimd};
 
@@ -67,16 +69,15 @@ pub const REDUCTION_LIMIT: f64 = 268_435_456.0;
 #[inline(always)]
 fn kernels<S: Simd>(r: F<S>) -> (F<S>, F<S>) {
     let s = r.s;
-    let c = |x: f64| F::splat(s, x);
     let z = r * r;
     let ps = z.mul_add(
-        z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)),
-        c(S2),
+        z.mul_add(z.mul_add(z.mul_add(k(s, S6), k(s, S5)), k(s, S4)), k(s, S3)),
+        k(s, S2),
     );
-    let sin = (z * r).mul_add(z.mul_add(ps, c(S1)), r);
+    let sin = (z * r).mul_add(z.mul_add(ps, k(s, S1)), r);
     // Below 2⁻²⁷, sin r = r correctly rounded; taking r there also keeps sin(−0) = −0 (the sum
     // above gives +0).
-    let tiny = r.abs().lt(c(TINY));
+    let tiny = r.abs().lt(k(s, TINY));
     (tiny.select(r, sin), cos_kernel(z))
 }
 
@@ -85,32 +86,30 @@ fn kernels<S: Simd>(r: F<S>) -> (F<S>, F<S>) {
 #[inline(always)]
 fn cos_kernel<S: Simd>(z: F<S>) -> F<S> {
     let s = z.s;
-    let c = |x: f64| F::splat(s, x);
     let pc = z.mul_add(
         z.mul_add(
-            z.mul_add(z.mul_add(z.mul_add(c(C6), c(C5)), c(C4)), c(C3)),
-            c(C2),
+            z.mul_add(z.mul_add(z.mul_add(k(s, C6), k(s, C5)), k(s, C4)), k(s, C3)),
+            k(s, C2),
         ),
-        c(C1),
+        k(s, C1),
     );
     let hz = z * 0.5;
-    let w = c(1.0) - hz;
-    let tail = (c(1.0) - w) - hz;
+    let w = k(s, 1.0) - hz;
+    let tail = (k(s, 1.0) - w) - hz;
     w + (z * z).mul_add(pc, tail)
 }
 
-/// `(sin x, cos x)` of every lane (module page: accuracy, range, the libm lanes).
+/// `(sin x, cos x)` of every lane (module page: accuracy, range, NaN beyond it).
 #[inline(always)]
 pub(crate) fn sin_cos<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
     let s = x.s;
-    let c = |v: f64| F::splat(s, v);
     let nb = x * INV_PIO2 + ROUNDER;
     let n = nb - ROUNDER;
-    let zero = c(0.0);
+    let zero = k(s, 0.0);
     let (sin, cos) = if n.eq(zero).not().any() {
-        let r = n.mul_add(c(-P1), x);
-        let r = n.mul_add(c(-P2), r);
-        let r = n.mul_add(c(-P3), r);
+        let r = n.mul_add(k(s, -P1), x);
+        let r = n.mul_add(k(s, -P2), r);
+        let r = n.mul_add(k(s, -P3), r);
         // Lanes with n = 0 take x itself: the same bits as the path without reduction (the
         // terms above would turn x = −0 into +0, P₃ being negative).
         let r = n.eq(zero).select(x, r);
@@ -125,26 +124,10 @@ pub(crate) fn sin_cos<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
     } else {
         kernels(x)
     };
-    let wild = x.abs().le(c(REDUCTION_LIMIT)).not();
-    if wild.any() {
-        return libm_lanes(x, wild, sin, cos);
-    }
-    (sin, cos)
-}
-
-/// The lanes of `wild` from libm's `sin_cos`, the others as given (a cold path).
-#[cold]
-#[inline(never)]
-fn libm_lanes<S: Simd>(x: F<S>, wild: M<S>, sin: F<S>, cos: F<S>) -> (F<S>, F<S>) {
-    let s = x.s;
-    let mut sv = [0.0f64; 8];
-    let mut cv = [0.0f64; 8];
-    let lanes = x.lanes();
-    for (i, &xi) in lanes.iter().enumerate() {
-        (sv[i], cv[i]) = xi.sin_cos();
-    }
-    let (ls, lc) = (F::load(s, &sv), F::load(s, &cv));
-    (wild.select(ls, sin), wild.select(lc, cos))
+    // Beyond the reduction's range (and for ±∞, NaN): NaN, so that the body fails there.
+    let wild = x.abs().le(k(s, REDUCTION_LIMIT)).not();
+    let nan = k(s, f64::NAN);
+    (wild.select(nan, sin), wild.select(nan, cos))
 }
 
 /// The Rodrigues coefficients `(a, b) = (sin θ/θ, (1 − cos θ)/θ²)` of `exp(ω) = I + aω̂ + bω̂²`
@@ -158,17 +141,17 @@ fn libm_lanes<S: Simd>(x: F<S>, wild: M<S>, sin: F<S>, cos: F<S>) -> (F<S>, F<S>
 #[inline(always)]
 pub(crate) fn rodrigues_coefficients<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
     let s = t2.s;
-    let c = |v: f64| F::splat(s, v);
     let z = t2 * 0.25;
     let ps = z.mul_add(
-        z.mul_add(z.mul_add(z.mul_add(c(S6), c(S5)), c(S4)), c(S3)),
-        c(S2),
+        z.mul_add(z.mul_add(z.mul_add(k(s, S6), k(s, S5)), k(s, S4)), k(s, S3)),
+        k(s, S2),
     );
-    let q = z.mul_add(z.mul_add(ps, c(S1)), c(1.0)) * 0.5;
+    let q = z.mul_add(z.mul_add(ps, k(s, S1)), k(s, 1.0)) * 0.5;
     let ch = cos_kernel(z);
     let (q, ch) = {
-        let near = z.le(c(
-            core::f64::consts::FRAC_PI_4 * core::f64::consts::FRAC_PI_4
+        let near = z.le(k(
+            s,
+            core::f64::consts::FRAC_PI_4 * core::f64::consts::FRAC_PI_4,
         ));
         if near.not().any() {
             let t = t2.sqrt();
@@ -223,7 +206,7 @@ pub fn sin_cos_slices(
 }
 
 /// `(sin x, cos x)` on one lane: the bits every lane of every level computes for x (the scalar
-/// reference of the batch kernels; within 2 ulp of libm, see the module page).
+/// reference of the batch kernels; within 1 ulp of libm up to 2²⁸, NaN beyond: module page).
 pub fn sin_cos_lane(x: f64) -> (f64, f64) {
     let (s, c) = sin_cos(F::splat(pulp::Scalar, x));
     (s.v, c.v)
