@@ -3,6 +3,7 @@
 //!
 //! Users depend on the layer they need (`lie-groups`, `trivial-bundles`, `discretization`,
 //! `integrators`, `mechanics`); this crate only gathers them.
+pub use batch;
 pub use discretization;
 pub use integrators;
 pub use lie_groups;
