@@ -4,7 +4,7 @@ use crate::engine::{self, book_index, group_len, Book, GroupFn, Kernel, Schedule
 use crate::lanes::F;
 use crate::{BatchError, Level};
 use integrators::ensemble::{Execution, Status, Summary};
-use integrators::CompositionScheme;
+use integrators::{Clock, CompositionScheme};
 use lie_groups::{LieGroup, So3};
 use nalgebra::{Matrix3, Vector3};
 use pulp::Simd;
@@ -41,8 +41,9 @@ pub struct Batch<K: Kernel> {
     composition: Option<CompositionScheme>,
     inner_steps: u64,
     outer_steps: u64,
-    /// The sum of the steps taken, in order (each lane's time while it runs).
-    time: f64,
+    /// The steps taken, summed on the scalar integrators' compensated clock (each lane's time
+    /// while it runs).
+    clock: Clock,
     monitor_every: Option<u64>,
     execution: Execution,
 }
@@ -152,7 +153,7 @@ impl<K: Kernel> Batch<K> {
             composition: None,
             inner_steps: 0,
             outer_steps: 0,
-            time: 0.0,
+            clock: Clock::at(0.0),
             monitor_every: None,
             execution: Execution::Sequential,
         })
@@ -207,9 +208,10 @@ impl<K: Kernel> Batch<K> {
     pub fn steps(&self) -> u64 {
         self.outer_steps
     }
-    /// The time of the running bodies: the steps summed in order.
+    /// The time of the running bodies: the steps summed as the scalar integrators sum them
+    /// ([`integrators::Clock`]: n steps of h end at the correctly rounded n·h).
     pub fn time(&self) -> f64 {
-        self.time
+        self.clock.now()
     }
 
     /// One step of size h for every running body.
@@ -235,14 +237,14 @@ impl<K: Kernel> Batch<K> {
             inner_before: self.inner_steps,
             monitor_every: self.monitor_every,
             outer_before: self.outer_steps,
-            time_before: self.time,
+            clock_before: self.clock,
         };
         self.kernel
             .run_schedule(self.level, &mut self.groups, &schedule, self.execution)?;
         self.outer_steps += steps;
         self.inner_steps += steps * subs.len() as u64;
         for _ in 0..steps {
-            self.time += h;
+            self.clock.advance(h);
         }
         Ok(())
     }
@@ -322,7 +324,7 @@ impl<K: Kernel> Batch<K> {
                 };
                 let built = !matches!(status, Status::BuildFailed(_));
                 let (steps, time) = match status {
-                    Status::Completed => (self.outer_steps as usize, self.time),
+                    Status::Completed => (self.outer_steps as usize, self.clock.now()),
                     _ => (book(Book::Taken) as usize, book(Book::Time)),
                 };
                 Summary {

@@ -18,6 +18,7 @@
 use crate::lanes::{load_n, store_n, F, M};
 use crate::{BatchError, Level};
 use integrators::ensemble::Execution;
+use integrators::Clock;
 use pulp::{Simd, WithSimd};
 use rayon::prelude::*;
 
@@ -136,8 +137,8 @@ pub struct Schedule<'a> {
     pub monitor_every: Option<u64>,
     /// Outer steps taken before this call.
     pub outer_before: u64,
-    /// The time before this call.
-    pub time_before: f64,
+    /// The clock before this call.
+    pub clock_before: Clock,
 }
 
 /// Runs `schedule` on one block of groups.
@@ -147,8 +148,8 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
     let glen = group_len::<K>();
     let c = K::COMPONENTS;
     let one = F::splat(s, 1.0);
-    // The time before each step, as the scalar integrators sum it (t += h).
-    let mut time = sch.time_before;
+    // The time before each step, on the scalar integrators' clock.
+    let mut clock = sch.clock_before;
     for k in 0..sch.steps {
         let outer = sch.outer_before + k + 1;
         let monitor = sch.monitor_every.is_some_and(|m| outer.is_multiple_of(m));
@@ -174,14 +175,14 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
                 kernel.store(&st, group, off);
                 let failed = alive.and(ok.not());
                 if failed.any() {
-                    record_failure(s, failed, group, c, off, outer - 1, time);
+                    record_failure(s, failed, group, c, off, outer - 1, clock.now());
                 }
                 if monitor {
                     monitor_lanes(s, kernel, &st, ok, group, off);
                 }
             }
         }
-        time += sch.h;
+        clock.advance(sch.h);
     }
 }
 
