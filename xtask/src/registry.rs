@@ -1320,6 +1320,76 @@ pub fn all() -> Vec<Generator> {
                 )],
             }),
         },
+        Generator {
+            name: "bench-batch",
+            about: "one step of 1024 bodies, scalar against batched (per instruction set) and the hand-written NO_SQUISH and RK4",
+            takes: "2 min",
+            how: How::Bench(Bench {
+                bench: "batch",
+                filter: Some("batch/free_body|batch/field"),
+                measurement_time: 2,
+                tables: &[
+                    (
+                        At {
+                            file: BENCH,
+                            part: "batch-targets",
+                        },
+                        Table::Ratios(&[
+                            Ratio {
+                                what: "batched Strang with R, AVX-512 (target ≥ 6× the scalar step)",
+                                id: "batch/free_body/batch/strang/avx512",
+                                against: "batch/free_body/scalar/strang",
+                                bound: Some(0.167),
+                            },
+                            Ratio {
+                                what: "batched Strang with R, AVX2 forced (target ≥ 3×)",
+                                id: "batch/free_body/batch/strang/avx2",
+                                against: "batch/free_body/scalar/strang",
+                                bound: Some(0.333),
+                            },
+                            Ratio {
+                                what: "batched RK4, AVX-512 (target ≥ 4×)",
+                                id: "batch/free_body/batch/rk4/avx512",
+                                against: "batch/free_body/scalar/rk4",
+                                bound: Some(0.25),
+                            },
+                            Ratio {
+                                what: "batched Strang, AVX-512, against the hand-written NO_SQUISH",
+                                id: "batch/free_body/batch/strang/avx512",
+                                against: "batch/free_body/hand/no_squish",
+                                bound: None,
+                            },
+                            Ratio {
+                                what: "batched RK4, AVX-512, against the hand-written RK4",
+                                id: "batch/free_body/batch/rk4/avx512",
+                                against: "batch/free_body/hand/rk4",
+                                bound: None,
+                            },
+                        ]),
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "batch-free-body",
+                        },
+                        Table::List {
+                            prefix: "batch/free_body/",
+                            competitor: Some("batch/free_body/scalar/strang"),
+                        },
+                    ),
+                    (
+                        At {
+                            file: BENCH,
+                            part: "batch-field",
+                        },
+                        Table::List {
+                            prefix: "batch/field/",
+                            competitor: Some("batch/field/scalar/strang"),
+                        },
+                    ),
+                ],
+            }),
+        },
     ]
 }
 
