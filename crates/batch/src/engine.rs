@@ -94,7 +94,7 @@ pub trait Kernel: Sync + Send + Clone {
     /// Whether the attitude is renormalized every [`crate::RENORMALIZE_EVERY`] steps (the
     /// splittings), or kept on the group by the method itself (a unit quaternion).
     fn renormalizes(&self) -> bool;
-    /// Runs the step loop of `schedule` over `groups` (the engine's [`run`]); a method with
+    /// Runs the step loop of `schedule` over `groups` (the engine's `run`); a method with
     /// variants (axes, a field) picks the one with its constants fixed here, once per run.
     fn run_schedule(
         &self,

@@ -165,7 +165,7 @@ pub(crate) fn rodrigues_coefficients<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
     (q2 * ch, q2 * q)
 }
 
-/// [`sin_cos`] over slices on a given level: `sin[i], cos[i] = sin_cos(x[i])`, the last vector
+/// The lanes' `sin_cos` over slices on a given level: `sin[i], cos[i] = sin_cos(x[i])`, the last vector
 /// padded. The lane kernel made callable on its own, for its tests against libm.
 ///
 /// Errors: unequal lengths, or a level this CPU lacks.
