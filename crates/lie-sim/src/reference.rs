@@ -11,7 +11,7 @@
 //!   scene's step when ω = 0), h₀/2, h₀/4, …, every run ending its steps on the knots of the force
 //!   schedules (torque, force, thrust, wheel torques: where the force has kinks), until two
 //!   successive runs agree to the tolerance (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`]
-//!   relative, in the trade's error measure [`crate::trade::FinalState::error`]). Refinement stops
+//!   relative, in the trade's error measure `crate::trade::FinalState::error`). Refinement stops
 //!   early when it stalls at the rounding level (two successive refinements each reduce the
 //!   difference by less than [`STALL_RATIO`], once it is below [`STALL_GATE`]), and when
 //!   `--reference-budget` (default [`DEFAULT_BUDGET`]) has run out: the first two runs always

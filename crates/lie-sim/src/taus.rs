@@ -1,4 +1,4 @@
-//! The τ maps a scene may name (`tau = "…"`): one row each in [`taus!`], and one dispatch
+//! The τ maps a scene may name (`tau = "…"`): one row each in `taus!`, and one dispatch
 //! ([`with_tau`]) from the name to the type, so that a method is written once, generic over
 //! `T: Tau<G>`, and never once per τ.
 

@@ -522,7 +522,7 @@ pub fn cheapest_per_target(rows: &[TradeRow], metric: Metric, floor: f64) -> Vec
 }
 
 /// Writes the table as CSV to `csv` and the plot of `metric` against cost to `svg`: one series
-/// per method ([`style_of`]), the reference's estimated error as a dashed line (error at T), and
+/// per method (`style_of`), the reference's estimated error as a dashed line (error at T), and
 /// the [`cheapest_per_target`] runs ringed and labelled.
 pub fn write_outputs(
     report: &TradeReport,

@@ -1,19 +1,19 @@
-//! The method registry: one row per method, in [`methods!`], from which everything about methods
+//! The method registry: one row per method, in `methods!`, from which everything about methods
 //! in `lie-sim` is derived — the scene's `method` names and the options each takes
 //! ([`spec::check`]), building it on a scene's model ([`build`]), `trade`'s and `choose`'s
 //! candidates ([`candidates`]), the plot's families and styles ([`style`]), and the `lie-sim
 //! methods` listing and the docs' method table (`crate::listing`).
 //!
 //! A row ([`Row`]) says what the method is called, what it is in one line, which options it takes
-//! ([`Takes`]: τ, θ, coefficients, the modified Hamiltonian, a composition or processing around
-//! it), which of them `trade` runs ([`Trade`]), and how it is drawn; its module holds its
+//! (`Takes`: τ, θ, coefficients, the modified Hamiltonian, a composition or processing around
+//! it), which of them `trade` runs (`Trade`), and how it is drawn; its module holds its
 //! constructor, generic over the scene's [`Model`] and over τ ([`crate::taus::with_tau`]). What
 //! it applies to follows from the capabilities it asks the model for; its order, symmetry,
 //! explicitness and what it keeps are the library's `MethodInfo`, read from the built method,
 //! never restated here — and whether a composition or processing may wrap it is the built
 //! method's own `SymmetricMethod::is_symmetric`.
 //!
-//! Adding a method is a module with its row and constructor, and one line in [`methods!`].
+//! Adding a method is a module with its row and constructor, and one line in `methods!`.
 
 pub mod families;
 pub mod options;
@@ -223,7 +223,7 @@ impl fmt::Display for MethodSpec {
 
 /// Every configuration `trade` and `choose` run, in table order: for each row in registry order,
 /// its plain configurations (each set of coefficients × each τ × each θ), its compositions, its
-/// modified Hamiltonians and its processed forms ([`Trade`]), each over the τ it takes.
+/// modified Hamiltonians and its processed forms (`Trade`), each over the τ it takes.
 pub fn candidates() -> Vec<MethodSpec> {
     let mut v = Vec::new();
     for &method in MethodId::ALL {

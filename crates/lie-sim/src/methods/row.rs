@@ -42,7 +42,7 @@ pub struct Takes {
     pub stepping: Stepping,
 }
 
-/// Which configurations of a method `trade` (and `choose`) run, expanded by [`candidates`] over
+/// Which configurations of a method `trade` (and `choose`) run, expanded by `candidates` over
 /// the τ the method takes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Trade {
@@ -71,7 +71,7 @@ pub struct Row {
     /// What `trade` runs of it.
     pub trade: Trade,
     /// Its family in the plot, for a configuration that is not processed (processed methods are
-    /// [`families::PROCESSED`]).
+    /// `families::PROCESSED`).
     pub family: fn(&Options) -> &'static Family,
     /// Drawn dashed with hollow markers, as the second of a pair (kinetic–kick beside splitting,
     /// rkmk4 beside rk4), as τ = cayley is beside τ = exp.

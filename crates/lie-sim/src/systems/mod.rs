@@ -1,5 +1,5 @@
 //! The systems a scene may name (`[system] kind = "…"`): one module each, listed once in
-//! [`systems!`]. A module holds the system's `[system]` and `[initial]` keys as its own serde
+//! `systems!`. A module holds the system's `[system]` and `[initial]` keys as its own serde
 //! types (so that a key of another system is an unknown field, with serde's message and line),
 //! their checks, the `[forces]` it takes, and the [`crate::model::Model`] it builds — the
 //! `mechanics` model with the capabilities the methods may ask for. The model's facts (Casimir,
@@ -7,7 +7,7 @@
 //! (`integrators::System`).
 //!
 //! Adding a system is a module implementing [`common::SceneSystem`] and one line in
-//! [`systems!`].
+//! `systems!`.
 
 pub mod common;
 

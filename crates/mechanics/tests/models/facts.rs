@@ -113,7 +113,7 @@ fn every_model_keeps_the_parts_of_the_momentum_map_it_declares() {
         "planar spring",
         planar,
         Vector3::new(0.4, 0.5, -0.3),
-        g_planar.clone(),
+        g_planar,
         &[&[0]],
     );
     let falling = PlanarBody::free(2.0, 0.5)
@@ -141,8 +141,8 @@ fn every_model_keeps_the_parts_of_the_momentum_map_it_declares() {
     check(
         "gyrostat, wheel torques",
         Forced::new(gyro.clone(), wheels),
-        mu_gyro.clone(),
-        g_gyro.clone(),
+        mu_gyro,
+        g_gyro,
         &[&[0], &[1], &[2]],
     );
     let platform =
