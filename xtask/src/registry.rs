@@ -305,7 +305,7 @@ pub fn all() -> Vec<Generator> {
             about: "orders, invariants and lifted-map checks printed by the integrators' tests",
             takes: "20 s",
             how: How::Tests(Tests {
-                krate: "integrators",
+                krate: "lieflow-integrators",
                 binary: "methods",
                 parts: &[
                     (
@@ -365,7 +365,7 @@ pub fn all() -> Vec<Generator> {
             about: "orders and invariants printed by the models' tests",
             takes: "20 s",
             how: How::Tests(Tests {
-                krate: "mechanics",
+                krate: "lieflow-mechanics",
                 binary: "models",
                 parts: &[
                     (

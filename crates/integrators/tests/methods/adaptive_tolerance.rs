@@ -3,7 +3,7 @@
 //! rigid body to T = 10 (against the exact flow) and the fast heavy top to T = 5. The error is
 //! the trade's (`lie-sim trade`): `max(‖Π − Π_ref‖_max / ‖Π_ref‖_max, ‖R − R_ref‖_max)`.
 //!
-//! `cargo test --release -p integrators --test methods adaptive_tolerance -- --nocapture`
+//! `cargo test --release -p lieflow-integrators --test methods adaptive_tolerance -- --nocapture`
 //! prints the table (tolerance → error at T, error/tolerance, accepted and rejected steps,
 //! smallest and largest step).
 
