@@ -469,12 +469,15 @@ pub fn plot_loglog(
                 .map_err(|e| plot_error(out, e))?;
         }
         for (x, y, label) in &annotations.labels {
-            if !ok(&(*x, *y)) {
+            // A value of exactly 0 (an invariant kept exactly, e.g. by the exact flow in one
+            // step) has no place on a log axis: its ring and label sit on the axis' bottom.
+            let y = if *y == 0.0 { y0 } else { *y };
+            if !ok(&(*x, y)) {
                 continue;
             }
             chart
                 .draw_series(std::iter::once(
-                    EmptyElement::at((*x, *y))
+                    EmptyElement::at((*x, y))
                         + Circle::new((0, 0), 8, BLACK.stroke_width(1))
                         + Text::new(label.clone(), (10, -16), font.clone()),
                 ))
