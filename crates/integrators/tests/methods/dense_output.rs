@@ -101,7 +101,8 @@ fn the_interpolant_is_fourth_order() {
 /// Lie–Poisson θ = ½ (order 2) and RK4 (order 4), against the exact flow (max over T = 10).
 #[test]
 fn dense_output_is_within_twice_the_error_at_the_steps() {
-    fn check<I: Integrator<Group = So3>>(name: &str, mut integ: I, h: f64) {
+    /// `floor`: what the interpolant may add where the method's own error is zero.
+    fn check<I: Integrator<Group = So3>>(name: &str, mut integ: I, h: f64, floor: f64) {
         let steps = (10.0 / h).round() as usize;
         let at_steps: Vec<f64> = (1..=steps).map(|k| k as f64 * h).collect();
         let at_mid: Vec<f64> = (0..steps).map(|k| (k as f64 + 0.5) * h).collect();
@@ -128,7 +129,7 @@ fn dense_output_is_within_twice_the_error_at_the_steps() {
         .unwrap();
         println!("{name} h = {h}: at steps {step_err:.2e}, between {mid_err:.2e}");
         assert!(
-            mid_err <= 2.0 * step_err,
+            mid_err <= (2.0 * step_err).max(floor),
             "{name}: {mid_err:e} vs {step_err:e}"
         );
     }
@@ -137,18 +138,23 @@ fn dense_output_is_within_twice_the_error_at_the_steps() {
             "lie-poisson ½",
             LiePoisson::<So3, Cayley, _>::new(body(), 0.5, PI0, Some(g0())).unwrap(),
             h,
+            0.0,
         );
         check(
             "rk4",
             QuaternionRk4::new(body(), PI0, Some(g0())).unwrap(),
             h,
+            0.0,
         );
     }
-    // the exact flow as a method: dense output adds only the interpolant's O(h⁴)
+    // the exact flow as a method: exact at the steps (it evaluates its orbit at the elapsed
+    // time), so dense output adds only the cubic Hermite interpolant's O(h⁴) error (|Π| ~ 1 and
+    // its derivatives O(1) here); an interpolant of lower order would add O(h²) = 1e-6
     check(
         "exact",
         ExactFreeBody::new(body(), PI0, Some(g0())).unwrap(),
         0.001,
+        1e-12,
     );
 }
 
