@@ -211,3 +211,24 @@ pub(crate) fn force<G: LieGroup, S: System<G> + ?Sized>(
         _ => None,
     }
 }
+
+/// The Lie–Poisson right-hand side `μ̇ = ad*_ξ μ + F(g) + F_ext(t, g, ξ)` at a state whose
+/// velocity ξ = ∂h/∂μ(μ) the caller has already evaluated (the RKMK stages of
+/// [`crate::Rkmk4`] and of the embedded pairs).
+#[inline(always)]
+pub(crate) fn lie_poisson_rate<G: LieGroup, S: System<G> + ?Sized>(
+    system: &S,
+    t: f64,
+    g: Option<&G>,
+    mu: &G::Algebra,
+    xi: &G::Algebra,
+) -> G::Algebra {
+    let mut dmu = G::ad_dual_apply(xi, mu);
+    if let Some(f) = force(system, g) {
+        dmu = dmu.add(&f);
+    }
+    if system.is_forced() {
+        dmu = dmu.add(&system.external_force(t, g, xi));
+    }
+    dmu
+}

@@ -55,7 +55,7 @@ use super::{starting_step, ButcherPair, Controller, Dop853, DormandPrince54, Emb
 use crate::carried_state;
 use crate::checks::check_state;
 use crate::lie_poisson::RENORMALIZE_EVERY;
-use crate::system::force;
+use crate::system::lie_poisson_rate;
 use crate::unroll::unroll;
 use crate::{Integrator, IntegratorError, MethodInfo, System};
 use core::marker::PhantomData;
@@ -184,13 +184,7 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
         mu: &G::Algebra,
     ) -> (G::Algebra, G::Algebra) {
         let xi = v(mu);
-        let mut dmu = G::ad_dual_apply(&xi, mu);
-        if let Some(f) = force(&self.system, g) {
-            dmu = dmu.add(&f);
-        }
-        if self.system.is_forced() {
-            dmu = dmu.add(&self.system.external_force(t, g, &xi));
-        }
+        let dmu = lie_poisson_rate(&self.system, t, g, mu, &xi);
         (xi, dmu)
     }
 

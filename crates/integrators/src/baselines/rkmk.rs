@@ -40,7 +40,7 @@ use crate::carried_state;
 use crate::checks::check_state;
 use crate::clock::Clock;
 use crate::lie_poisson::RENORMALIZE_EVERY;
-use crate::system::force;
+use crate::system::lie_poisson_rate;
 use crate::{Integrator, IntegratorError, System};
 use lie_groups::{LieGroup, Vector};
 
@@ -101,13 +101,7 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         mu: &G::Algebra,
     ) -> (G::Algebra, G::Algebra) {
         let xi = v(mu);
-        let mut dmu = G::ad_dual_apply(&xi, mu);
-        if let Some(f) = force(&self.system, g) {
-            dmu = dmu.add(&f);
-        }
-        if self.system.is_forced() {
-            dmu = dmu.add(&self.system.external_force(t, g, &xi));
-        }
+        let dmu = lie_poisson_rate(&self.system, t, g, mu, &xi);
         (xi, dmu)
     }
 
