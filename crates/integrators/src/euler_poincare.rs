@@ -96,10 +96,9 @@
 //! and 2e-15; in increment form it reaches 1.0e-14 and 2.5e-15 (`tests/error_floor.rs`).
 
 use crate::checks::{check_state, check_theta, step_too_large};
-use crate::clock::Clock;
 use crate::compensated::two_sum;
-use crate::lie_poisson::RENORMALIZE_EVERY;
 use crate::solver::{solve, Scales};
+use crate::step_state::StepState;
 use crate::system::force;
 use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
@@ -139,17 +138,15 @@ pub struct TangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     system: S,
     map: M,
     config: SolverConfig,
-    t: Clock,
     xi: G::Algebra,
     /// The rounding error of ξ carried to the next step (compensated summation: ξ + xi_err is
     /// the sum of the increments to O(ε²)).
     xi_err: G::Algebra,
-    g: Option<G>,
+    /// t, g and g's renormalization (one product a step).
+    state: StepState<G>,
     iterations: usize,
     /// Jacobians evaluated by the last successful step.
     jacobians: usize,
-    /// Steps since g was last renormalized onto the group.
-    unnormalized: u32,
     /// Past solutions and the Newton matrix, for the next step of the same size.
     warm: WarmStart<G>,
 }
@@ -179,13 +176,11 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             system,
             map,
             config: SolverConfig::default(),
-            t: Clock::at(0.0),
             xi_err: G::Algebra::zeros(G::dim()),
             xi: xi0,
-            g: g0,
+            state: StepState::new(g0, 1),
             iterations: 0,
             jacobians: 0,
-            unnormalized: 0,
             warm: WarmStart::default(),
         })
     }
@@ -231,17 +226,15 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &xi, "velocity ξ", g.as_ref())?;
-        self.t.set(t);
+        self.state.reset(t, g);
         self.xi = xi;
         self.xi_err = G::Algebra::zeros(G::dim());
-        self.g = g;
         self.warm.clear();
-        self.unnormalized = 0;
         Ok(())
     }
     /// Sets the time alone (the compensation of ξ and the warm start kept).
     pub(crate) fn set_time_only(&mut self, t: f64) {
-        self.t.set(t);
+        self.state.t.set(t);
     }
     /// The system.
     pub fn system(&self) -> &S {
@@ -307,12 +300,13 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> TangentLiftIntegrator<G, M, S> 
     fn evaluate(&self, h: f64, delta: &G::Algebra) -> Evaluation<G> {
         let xi = self.xi.add(delta);
         let gbar = self
+            .state
             .g
             .as_ref()
             .filter(|_| self.system.needs_configuration())
             .map(|gk| self.map.base_point(gk, &xi.scale(h)));
         let zeta = self
-            .field(self.t.now() + self.theta() * h, gbar.as_ref(), &xi)
+            .field(self.state.now() + self.theta() * h, gbar.as_ref(), &xi)
             .scale(h);
         Evaluation { xi, gbar, zeta }
     }
@@ -385,7 +379,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
             // O(h²) of the solution (δ = 0 is O(h)). After six steps of this size: the
             // WarmStart extrapolation of the past increments, O(h⁷).
             let guess = self.warm.predict(h).unwrap_or_else(|| {
-                self.field(self.t.now(), self.g.as_ref(), &self.xi)
+                self.field(self.state.now(), self.state.g.as_ref(), &self.xi)
                     .scale(theta * h)
             });
             // The residual's terms are rounded at ε·θ|h| (‖ξ‖² + the field's data) even where δ
@@ -398,7 +392,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                 Scales {
                     data: theta
                         * h.abs()
-                        * (xn * xn + self.data_size(self.t.now(), self.g.as_ref(), &self.xi)),
+                        * (xn * xn
+                            + self.data_size(self.state.now(), self.state.g.as_ref(), &self.xi)),
                     state: xn,
                 }
             };
@@ -439,42 +434,22 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                 what: "velocity ξ_{k+1}",
             });
         }
-        // g_{k+1} from ḡ when it was formed, else in one product from g_k; renormalized every
-        // RENORMALIZE_EVERY steps (see there).
-        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
-        let g1 = match self.g.as_ref() {
-            Some(gk) => {
-                let g1 = match &ev.gbar {
-                    Some(gb) => self.map.second_point(gb, &eta),
-                    None => self.map.next_point(gk, &eta),
-                };
-                let g1 = if renormalize { g1.normalize() } else { g1 };
-                if !g1.is_finite() {
-                    return Err(IntegratorError::NonFinite {
-                        what: "configuration g_{k+1}",
-                    });
-                }
-                Some(g1)
-            }
-            None => None,
-        };
+        // g_{k+1} from ḡ when it was formed, else in one product from g_k.
+        let g1 = self.state.next_configuration(|gk| match &ev.gbar {
+            Some(gb) => self.map.second_point(gb, &eta),
+            None => self.map.next_point(gk, &eta),
+        })?;
         self.xi = xi1;
         self.xi_err = err;
-        self.g = g1;
-        self.t.advance(h);
+        self.state.commit(h, g1);
         self.iterations = iterations;
         self.jacobians = jacobians;
-        self.unnormalized = if renormalize {
-            0
-        } else {
-            self.unnormalized + 1
-        };
         self.warm
-            .record(h, self.t.now(), &delta, contraction, jacobians);
+            .record(h, self.state.now(), &delta, contraction, jacobians);
         Ok(())
     }
     fn time(&self) -> f64 {
-        self.t.now()
+        self.state.now()
     }
     fn momentum(&self) -> G::Algebra {
         self.system.momentum(&self.xi)
@@ -492,10 +467,10 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
         )
     }
     fn configuration(&self) -> Option<&G> {
-        self.g.as_ref()
+        self.state.g.as_ref()
     }
     fn energy(&self) -> f64 {
-        self.system.energy(&self.momentum(), self.g.as_ref())
+        self.system.energy(&self.momentum(), self.state.g.as_ref())
     }
     fn casimir(&self) -> Option<f64> {
         self.system.casimir(&self.momentum())

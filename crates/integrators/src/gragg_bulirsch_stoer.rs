@@ -63,8 +63,8 @@
 //! forms; on SE(3), SE(2) and SO(4) against independent classical RK4 runs. No allocation per step
 //! for SO(3), SE(3), SE(2) (`tests/no_alloc.rs`).
 
-use crate::clock::Clock;
 use crate::compensated::two_sum;
+use crate::step_state::{state_accessors, StepState, RENORMALIZE_AFTER};
 use crate::system::force;
 use crate::{Integrator, IntegratorError, System};
 use lie_groups::{LieGroup, Vector};
@@ -165,11 +165,12 @@ pub fn dexp_left_inv_series<G: LieGroup>(
 #[derive(Debug, Clone)]
 pub struct GraggBulirschStoer<G: LieGroup, S: System<G>> {
     system: S,
-    t: Clock,
     mu: G::Algebra,
     /// The rounding error of the last `μ + δ`, added to the next increment (TwoSum).
     mu_err: G::Algebra,
-    g: Option<G>,
+    /// t, g, and g projected onto G at every step: a reference run takes few, costly steps, so
+    /// the projection is free and keeps ‖gᵀg − I‖ at ε whatever the step count.
+    state: StepState<G>,
     /// k: the extrapolation columns (order 2k).
     columns: usize,
     /// Scratch: the last row of the extrapolation tableau, (Θ, δ) per column; allocated once.
@@ -210,10 +211,9 @@ impl<G: LieGroup, S: System<G>> GraggBulirschStoer<G, S> {
         let n = G::dim();
         Ok(Self {
             system,
-            t: Clock::at(0.0),
             mu: mu0,
             mu_err: G::Algebra::zeros(n),
-            g: g0,
+            state: StepState::new(g0, RENORMALIZE_AFTER),
             columns,
             table: vec![(G::Algebra::zeros(n), G::Algebra::zeros(n)); columns],
         })
@@ -301,9 +301,9 @@ impl<G: LieGroup, S: System<G>> Integrator for GraggBulirschStoer<G, S> {
         let field = LocalField {
             system: &self.system,
             h,
-            t0: self.t.now(),
+            t0: self.state.now(),
             mu0: &self.mu,
-            g0: self.g.as_ref(),
+            g0: self.state.g.as_ref(),
             needs_g: self.system.needs_configuration() || self.system.is_forced(),
         };
         let zero = G::Algebra::zeros(n);
@@ -338,49 +338,19 @@ impl<G: LieGroup, S: System<G>> Integrator for GraggBulirschStoer<G, S> {
                 what: "extrapolated step (Θ, δ)",
             });
         }
-        let g1 = match &self.g {
-            Some(g) => {
-                let g1 = G::exp_compose(g, theta).normalize();
-                if !g1.is_finite() {
-                    return Err(IntegratorError::NonFinite {
-                        what: "configuration g_{k+1}",
-                    });
-                }
-                Some(g1)
-            }
-            None => None,
-        };
+        let g1 = self
+            .state
+            .next_configuration(|g| G::exp_compose(g, theta))?;
         // μ_{k+1} = μ_k + (δ + e_k) by TwoSum (crate::compensated): the bits of δ that the
         // addition rounds away are carried into the next step instead of lost, so μ does not
         // random-walk by ε|μ| per step (which a fast spin turns into a phase drift ∝ T).
         let (sum, err) = two_sum(&self.mu, &delta.add(&self.mu_err));
         self.mu_err = err;
         self.mu = sum;
-        self.g = g1;
-        self.t.advance(h);
+        self.state.commit(h, g1);
         Ok(())
     }
-    fn time(&self) -> f64 {
-        self.t.now()
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.mu.clone()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.system.velocity(&self.mu)
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(&self.system, self.t.now(), &self.mu, self.g.as_ref())
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.g.as_ref()
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.mu, self.g.as_ref())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.mu)
-    }
+    state_accessors!(mu);
     fn method_name(&self) -> String {
         format!(
             "gragg-bulirsch-stoer(k={}, order {})",

@@ -154,6 +154,7 @@ pub mod lie_poisson;
 pub mod processing;
 pub mod solver;
 pub mod splitting;
+pub(crate) mod step_state;
 mod system;
 mod unroll;
 pub mod warm_start;
@@ -172,6 +173,7 @@ pub use integrator::{integrate, Integrator, MethodInfo};
 pub use lie_groups::{self, nalgebra};
 pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};
+pub use step_state::RENORMALIZE_AFTER;
 pub use system::{euclidean_norm, System};
 pub use warm_start::WarmStart;
 

@@ -79,9 +79,9 @@
 //! needed 5–6); the force's derivative is dropped (see [`crate::solver`]).
 
 use crate::checks::{check_state, check_theta, step_too_large};
-use crate::clock::Clock;
 use crate::compensated::two_sum;
 use crate::solver::{solve, Scales, Solution};
+use crate::step_state::{state_accessors, StepState};
 use crate::system::force;
 use crate::WarmStart;
 use crate::{Integrator, IntegratorError, SolverConfig, System};
@@ -120,27 +120,18 @@ pub struct CotangentLiftIntegrator<G: LieGroup, M: LiftedMap<G>, S: System<G>> {
     system: S,
     map: M,
     config: SolverConfig,
-    t: Clock,
     mu: G::Algebra,
     /// The rounding error of μ carried to the next step (compensated summation: μ + mu_err is
     /// the sum of the increments to O(ε²)), so that |μ|² does not random-walk either.
     mu_err: G::Algebra,
-    g: Option<G>,
+    /// t, g and g's renormalization (one product a step: g_{k+1} = g_k a(η)⁻¹ b(η) fused).
+    state: StepState<G>,
     iterations: usize,
     /// Jacobians evaluated by the last successful step.
     jacobians: usize,
-    /// Steps since g was last renormalized onto the group.
-    unnormalized: u32,
     /// Past solutions and the Newton matrix, for the next step of the same size.
     warm: WarmStart<G>,
 }
-
-/// g is renormalized onto the group every this many steps. In between, g_{k+1} = g_k τ(θη)τ((1−θ)η)
-/// stays on the group up to its own rounding (a product of g_k with an element of G in increment
-/// form), so the defect grows like a random walk, ‖gᵀg − I‖ ≈ √k ε ≤ 1e-14 here; renormalizing at
-/// every step would round g a second time per step, with a bias the spatial momentum map
-/// Ad*_{g⁻¹}μ accumulates (9e-13 after 10⁷ steps of h = 1e-5, against 1.2e-13 now).
-pub const RENORMALIZE_EVERY: u32 = 1024;
 
 impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S> {
     /// Builds the integrator of a configured map at t = 0 from μ₀ and optionally g₀, with the
@@ -167,13 +158,11 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             system,
             map,
             config: SolverConfig::default(),
-            t: Clock::at(0.0),
             mu_err: G::Algebra::zeros(G::dim()),
             mu: mu0,
-            g: g0,
+            state: StepState::new(g0, 1),
             iterations: 0,
             jacobians: 0,
-            unnormalized: 0,
             warm: WarmStart::default(),
         })
     }
@@ -205,17 +194,15 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
-        self.t.set(t);
+        self.state.reset(t, g);
         self.mu = mu;
         self.mu_err = G::Algebra::zeros(G::dim());
-        self.g = g;
         self.warm.clear();
-        self.unnormalized = 0;
         Ok(())
     }
     /// Sets the time alone (the compensation of μ kept).
     pub(crate) fn set_time_only(&mut self, t: f64) {
-        self.t.set(t);
+        self.state.t.set(t);
     }
     /// The system.
     pub fn system(&self) -> &S {
@@ -266,7 +253,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         if self.system.is_forced() {
             return Some(self.forced_impulse(h, xi));
         }
-        self.g
+        self.state
+            .g
             .as_ref()
             .filter(|_| self.system.has_potential())
             .and_then(|gk| force(&self.system, Some(&self.map.base_point(gk, xi))))
@@ -276,6 +264,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// [`Self::impulse`] of a forced system.
     fn forced_impulse(&self, h: f64, xi: &G::Algebra) -> G::Algebra {
         let gbar = self
+            .state
             .g
             .as_ref()
             .filter(|_| self.system.needs_configuration())
@@ -285,7 +274,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         } else {
             self.system.velocity(&self.mu)
         };
-        let t = self.t.now() + self.theta() * h;
+        let t = self.state.now() + self.theta() * h;
         let mut f = self.system.external_force(t, gbar.as_ref(), &velocity);
         if let Some(fp) = force(&self.system, gbar.as_ref()) {
             f = f.add(&fp);
@@ -324,13 +313,13 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         let mut mid = self
             .mu
             .axpy(0.5 * h * sign, &G::ad_dual_apply(&v, &self.mu));
-        if let Some(f) = force(&self.system, self.g.as_ref()) {
+        if let Some(f) = force(&self.system, self.state.g.as_ref()) {
             mid = mid.axpy((1.0 - self.theta()) * h, &f);
         }
         if self.system.is_forced() {
             let f = self
                 .system
-                .external_force(self.t.now(), self.g.as_ref(), &v);
+                .external_force(self.state.now(), self.state.g.as_ref(), &v);
             mid = mid.axpy((1.0 - self.theta()) * h, &f);
         }
         self.system.velocity(&mid).scale(h)
@@ -384,7 +373,11 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// ([`System::force_derivative`]) — `None` without a potential or g, or where the map does
     /// not give its pieces. (An external force's own derivative is not included.)
     fn force_term(&self, h: f64, xi: &G::Algebra) -> Option<G::Operator> {
-        let gk = self.g.as_ref().filter(|_| self.system.has_potential())?;
+        let gk = self
+            .state
+            .g
+            .as_ref()
+            .filter(|_| self.system.has_potential())?;
         let dnu = self.map.base_momentum_impulse_derivative(xi)?;
         let dg = self.map.base_point_derivative(xi)?;
         let k = self.system.force_derivative(&self.map.base_point(gk, xi));
@@ -430,67 +423,24 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for CotangentLiftInt
             });
         }
         // g_{k+1}: the second point of R̃_d(ḡ, ξ), ḡ the base point over g_k (in one product).
-        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
-        let g1 = match self.g.as_ref() {
-            Some(gk) => {
-                let g1 = self.map.next_point(gk, &xi);
-                let g1 = if renormalize { g1.normalize() } else { g1 };
-                if !g1.is_finite() {
-                    return Err(IntegratorError::NonFinite {
-                        what: "configuration g_{k+1}",
-                    });
-                }
-                Some(g1)
-            }
-            None => None,
-        };
+        let g1 = self
+            .state
+            .next_configuration(|gk| self.map.next_point(gk, &xi))?;
         self.mu = mu1;
         self.mu_err = err;
-        self.g = g1;
-        self.t.advance(h);
+        self.state.commit(h, g1);
         self.iterations = solution.iterations;
         self.jacobians = solution.jacobians;
-        self.unnormalized = if renormalize {
-            0
-        } else {
-            self.unnormalized + 1
-        };
         self.warm.record(
             h,
-            self.t.now(),
+            self.state.now(),
             &xi,
             solution.contraction.zip(solution.contraction_bound),
             solution.jacobians,
         );
         Ok(())
     }
-    fn time(&self) -> f64 {
-        self.t.now()
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.mu.clone()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.system.velocity(&self.mu)
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate_on(
-            self.map.side(),
-            &self.system,
-            self.time(),
-            &self.momentum(),
-            self.configuration(),
-        )
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.g.as_ref()
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.mu, self.g.as_ref())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.mu)
-    }
+    state_accessors!(mu);
     fn method_name(&self) -> String {
         format!("lie-poisson({}, theta={})", self.map.label(), self.theta())
     }

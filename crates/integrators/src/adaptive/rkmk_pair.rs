@@ -54,7 +54,7 @@ use super::Tolerance;
 use super::{starting_step, ButcherPair, Controller, Dop853, DormandPrince54, EmbeddedPair};
 use crate::carried_state;
 use crate::checks::check_state;
-use crate::lie_poisson::RENORMALIZE_EVERY;
+use crate::step_state::{state_accessors, StepState};
 use crate::system::lie_poisson_rate;
 use crate::unroll::unroll;
 use crate::{Integrator, IntegratorError, MethodInfo, System};
@@ -117,11 +117,9 @@ const fn dexp_inv_terms(order: u32) -> usize {
 #[derive(Debug, Clone)]
 pub struct RkmkPair<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> {
     system: S,
-    t: f64,
     mu: G::Algebra,
-    g: Option<G>,
-    /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
-    unnormalized: u32,
+    /// t, g and g's renormalization (one product a step).
+    state: StepState<G>,
     /// (ξ, μ̇) at the current state where already evaluated (the last stage of a first-same-
     /// as-last pair, or a rejected attempt's first stage).
     first: Option<(G::Algebra, G::Algebra)>,
@@ -161,10 +159,8 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         Ok(Self {
             system,
-            t: 0.0,
             mu: mu0,
-            g: g0,
-            unnormalized: 0,
+            state: StepState::new(g0, 1),
             first: None,
             pair: PhantomData,
         })
@@ -235,7 +231,7 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
     ) -> Candidate<G> {
         let n = G::dim();
         let mu = &carried_state::read(&self.mu);
-        let gk = self.g.as_ref();
+        let gk = self.state.g.as_ref();
         let needs_g = self.system.needs_configuration();
         let mut ks: [G::Algebra; N] = core::array::from_fn(|_| G::Algebra::zeros(n));
         let mut ls: [G::Algebra; N] = core::array::from_fn(|_| G::Algebra::zeros(n));
@@ -267,7 +263,7 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
                 Some(gk) if needs_g => Some(G::exp_compose(gk, &theta)),
                 _ => None,
             };
-            let (xi, l) = self.rates(v, self.t + P::C[I] * h, g_i.as_ref(), &mu_i);
+            let (xi, l) = self.rates(v, self.state.now() + P::C[I] * h, g_i.as_ref(), &mu_i);
             if P::FSAL && I == N - 1 && *b == P::B {
                 last = Some((xi.clone(), l.clone()));
             }
@@ -346,8 +342,8 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
         }
         let first = self.rates(
             &|mu: &G::Algebra| self.system.velocity(mu),
-            self.t,
-            self.g.as_ref(),
+            self.state.now(),
+            self.state.g.as_ref(),
             &self.mu,
         );
         self.first = Some(first.clone());
@@ -377,44 +373,32 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> RkmkPair<G, S
         c.mu1.is_finite() && c.g1.as_ref().is_none_or(G::is_finite)
     }
 
-    /// Takes the candidate, the time becoming `t1`.
-    fn commit(&mut self, c: Candidate<G>, t1: f64) {
-        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
-        self.g = c.g1.map(|g1| if renormalize { g1.normalize() } else { g1 });
-        self.unnormalized = if renormalize {
-            0
-        } else {
-            self.unnormalized + 1
-        };
+    /// Takes the candidate, the time becoming `t1` (an adaptive step's chosen end), or
+    /// advanced by its h on the compensated clock (a fixed step).
+    fn commit(&mut self, c: Candidate<G>, t1: Option<f64>) -> Result<(), IntegratorError> {
+        let mut g1 = c.g1;
+        self.state.finish_configuration(&mut g1)?;
+        match t1 {
+            Some(t1) => self.state.commit_to(t1, g1),
+            None => self.state.commit(c.h, g1),
+        }
         self.mu = c.mu1;
         self.first = c.last;
-        self.t = t1;
+        Ok(())
     }
 
     /// A fixed step of the *embedded* solution ŷ = y₀ + h Σ b̂ᵢkᵢ (b̂ = b − e), or of the
     /// second estimator's `b − e_low` with `low`: for measuring the embedded orders
     /// (`tests/methods/adaptive_orders.rs`).
     pub fn step_embedded(&mut self, h: f64, low: bool) -> Result<(), IntegratorError> {
-        let weights = match (low, P::E_LOW) {
-            (false, _) => P::E,
-            (true, Some(e)) => e,
-            (true, None) => {
-                return Err(IntegratorError::InvalidParameter {
-                    reason: format!("{} has one error estimator", P::NAME),
-                })
-            }
-        };
-        let t1 = self.t + h;
-        check_end_time(self.t, t1)?;
-        let b_hat: [f64; N] = core::array::from_fn(|i| P::B[i] - weights[i]);
+        let b_hat = P::embedded_weights(low)?;
         let c = self.candidate(h, &b_hat, None);
         if !Self::finite(&c) {
             return Err(IntegratorError::NonFinite {
                 what: "embedded step (Θ̂, μ̂)",
             });
         }
-        self.commit(c, t1);
-        Ok(())
+        self.commit(c, None)
     }
 }
 
@@ -433,31 +417,9 @@ impl<G: LieGroup, S: System<G>, P: ButcherPair<N>, const N: usize> Integrator
                 what: "RKMK stage (Θ, μ)",
             });
         }
-        let t1 = self.t + c.h;
-        self.commit(c, t1);
-        Ok(())
+        self.commit(c, None)
     }
-    fn time(&self) -> f64 {
-        self.t
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.mu.clone()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.system.velocity(&self.mu)
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(&self.system, self.t, &self.mu, self.g.as_ref())
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.g.as_ref()
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.mu, self.g.as_ref())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.mu)
-    }
+    state_accessors!(mu);
     fn method_name(&self) -> String {
         format!("rkmk-{}(exp)", P::NAME)
     }
@@ -480,7 +442,7 @@ impl<G: LieGroup, S: System<G> + Clone, P: ButcherPair<N>, const N: usize> Embed
         P::ERROR_EXPONENT
     }
     fn try_step_to(&mut self, t1: f64, tolerance: &Tolerance) -> Result<f64, IntegratorError> {
-        let h = check_end_time(self.t, t1)?;
+        let h = check_end_time(self.state.now(), t1)?;
         let c = self.candidate(h, &P::B, Some(tolerance));
         let err = P::error_norm(c.sum, c.sum_low, c.n);
         if !Self::finite(&c) || !err.is_finite() {
@@ -491,25 +453,24 @@ impl<G: LieGroup, S: System<G> + Clone, P: ButcherPair<N>, const N: usize> Embed
             return Ok(err.max(10.0));
         }
         if err <= 1.0 {
-            self.commit(c, t1);
+            self.commit(c, Some(t1))?;
         }
         Ok(err)
     }
     fn step_to(&mut self, t1: f64) -> Result<(), IntegratorError> {
-        let h = check_end_time(self.t, t1)?;
+        let h = check_end_time(self.state.now(), t1)?;
         let c = self.candidate(h, &P::B, None);
         if !Self::finite(&c) {
             return Err(IntegratorError::NonFinite {
                 what: "RKMK stage (Θ, μ)",
             });
         }
-        self.commit(c, t1);
-        Ok(())
+        self.commit(c, Some(t1))
     }
     fn starting_step(&mut self, direction: f64, tolerance: &Tolerance) -> f64 {
         let (xi0, l0) = self.first_stage();
         let n = G::dim();
-        let reconstruct = self.g.is_some();
+        let reconstruct = self.state.g.is_some();
         let count = if reconstruct { 2 * n } else { n } as f64;
         let group_scale = tolerance.atol + tolerance.rtol;
         let mu0 = self.mu.clone();
@@ -531,10 +492,14 @@ impl<G: LieGroup, S: System<G> + Clone, P: ButcherPair<N>, const N: usize> Embed
         let d2 = |h0: f64| {
             let h = sign * h0;
             let mu1 = mu0.axpy(h, &l0);
-            let g1 = self.g.as_ref().map(|g| G::exp_compose(g, &xi0.scale(h)));
+            let g1 = self
+                .state
+                .g
+                .as_ref()
+                .map(|g| G::exp_compose(g, &xi0.scale(h)));
             let (xi1, l1) = self.rates(
                 &|mu: &G::Algebra| self.system.velocity(mu),
-                self.t + h,
+                self.state.now() + h,
                 g1.as_ref(),
                 &mu1,
             );

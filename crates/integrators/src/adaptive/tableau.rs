@@ -72,6 +72,21 @@ pub trait ButcherPair<const N: usize>:
             }
         }
     }
+
+    /// The weights of an embedded solution, for measuring the embedded orders: `b − e`, or the
+    /// second estimator's `b − e_low` with `low`. Errors: `low` for a pair with one estimator.
+    fn embedded_weights(low: bool) -> Result<[f64; N], crate::IntegratorError> {
+        let e = match (low, Self::E_LOW) {
+            (false, _) => Self::E,
+            (true, Some(e)) => e,
+            (true, None) => {
+                return Err(crate::IntegratorError::InvalidParameter {
+                    reason: format!("{} has one error estimator", Self::NAME),
+                })
+            }
+        };
+        Ok(core::array::from_fn(|i| Self::B[i] - e[i]))
+    }
 }
 
 /// The Dormand–Prince 5(4) pair (J. R. Dormand, P. J. Prince, "A family of embedded Runge–Kutta

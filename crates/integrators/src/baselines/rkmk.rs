@@ -38,8 +38,7 @@
 
 use crate::carried_state;
 use crate::checks::check_state;
-use crate::clock::Clock;
-use crate::lie_poisson::RENORMALIZE_EVERY;
+use crate::step_state::{state_accessors, StepState};
 use crate::system::lie_poisson_rate;
 use crate::{Integrator, IntegratorError, System};
 use lie_groups::{LieGroup, Vector};
@@ -65,11 +64,9 @@ use lie_groups::{LieGroup, Vector};
 #[derive(Debug, Clone)]
 pub struct Rkmk4<G: LieGroup, S: System<G>> {
     system: S,
-    t: Clock,
     mu: G::Algebra,
-    g: Option<G>,
-    /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
-    unnormalized: u32,
+    /// t, g and g's renormalization (one product a step).
+    state: StepState<G>,
 }
 
 impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
@@ -79,10 +76,8 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         Ok(Self {
             system,
-            t: Clock::at(0.0),
             mu: mu0,
-            g: g0,
-            unnormalized: 0,
+            state: StepState::new(g0, 1),
         })
     }
     /// The system.
@@ -116,7 +111,8 @@ impl<G: LieGroup, S: System<G>> Rkmk4<G, S> {
         mu: &G::Algebra,
     ) -> (G::Algebra, G::Algebra) {
         let half = 0.5 * h;
-        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
+        let t0 = self.state.now();
+        let (tm, t1) = (t0 + half, t0 + h);
         let potential = self.system.needs_configuration();
         // g_i = g_k exp(Θ_i), only evaluated where a force reads it.
         let stage_g = |theta: &G::Algebra| potential.then(|| G::exp_compose(gk, theta));
@@ -161,10 +157,11 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let half = 0.5 * h;
-        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
+        let t0 = self.state.now();
+        let (tm, t1) = (t0 + half, t0 + h);
         // μ as the last step stored it, entry by entry (crate::carried_state).
         let mu = &carried_state::read(&self.mu);
-        let Some(gk) = self.g.as_ref() else {
+        let Some(gk) = self.state.g.as_ref() else {
             // μ alone: plain RK4 on μ̇ = ad*_ξ μ (no potential, checked at construction).
             let v = |mu: &G::Algebra| self.system.velocity(mu);
             let (_, l1) = self.rates(&v, t0, None, mu);
@@ -178,7 +175,7 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
                 });
             }
             self.mu = mu1;
-            self.t.advance(h);
+            self.state.commit(h, None);
             return Ok(());
         };
         // The system's shape is tested once per step, not in each stage (see
@@ -193,52 +190,15 @@ impl<G: LieGroup, S: System<G>> Integrator for Rkmk4<G, S> {
             });
         }
         // g_k exp(Θ) in increment form, g_k + g_k (exp Θ − I): g stays on G up to a random walk
-        // of roundings, renormalized every RENORMALIZE_EVERY steps (a polar step at each would
-        // be a sizeable part of the free body's step, and would round g a second time).
-        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
-        let g1 = G::exp_compose(gk, &theta);
-        let g1 = if renormalize { g1.normalize() } else { g1 };
-        if !g1.is_finite() {
-            return Err(IntegratorError::NonFinite {
-                what: "configuration g_{k+1}",
-            });
-        }
-        self.g = Some(g1);
+        // of roundings, renormalized rarely (crate::step_state: a polar step at each would be
+        // a sizeable part of the free body's step, and would round g a second time).
+        let mut g1 = Some(G::exp_compose(gk, &theta));
+        self.state.finish_configuration(&mut g1)?;
         self.mu = mu1;
-        self.t.advance(h);
-        self.unnormalized = if renormalize {
-            0
-        } else {
-            self.unnormalized + 1
-        };
+        self.state.commit(h, g1);
         Ok(())
     }
-    fn time(&self) -> f64 {
-        self.t.now()
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.mu.clone()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.system.velocity(&self.mu)
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(
-            &self.system,
-            self.time(),
-            &self.momentum(),
-            self.configuration(),
-        )
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.g.as_ref()
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.mu, self.g.as_ref())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.mu)
-    }
+    state_accessors!(mu);
     fn method_name(&self) -> String {
         "rkmk4(exp)".into()
     }

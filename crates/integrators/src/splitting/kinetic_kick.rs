@@ -2,10 +2,10 @@
 
 use super::kick::kick;
 use super::SplittingScheme;
-use super::RENORMALIZE_EVERY;
+use super::PRODUCTS_PER_STEP;
 use crate::checks::check_state;
-use crate::clock::Clock;
 use crate::compose::{StateSnapshot, SymmetricMethod};
+use crate::step_state::{state_accessors, StepState};
 use crate::{Integrator, IntegratorError, MethodInfo, System};
 use lie_groups::{LieGroup, Vector};
 
@@ -45,11 +45,9 @@ pub struct KineticKick<G: LieGroup, S: System<G>, K: KineticFlow<G>> {
     system: S,
     kinetic: K,
     scheme: SplittingScheme,
-    t: Clock,
     mu: G::Algebra,
-    g: Option<G>,
-    /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
-    unnormalized: u32,
+    /// t, g and g's renormalization ([`PRODUCTS_PER_STEP`]).
+    state: StepState<G>,
 }
 
 impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
@@ -67,10 +65,8 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
             system,
             kinetic,
             scheme,
-            t: Clock::at(0.0),
             mu: mu0,
-            g: g0,
-            unnormalized: 0,
+            state: StepState::new(g0, PRODUCTS_PER_STEP),
         })
     }
     /// Resets the state to (t, μ, g), with the checks of [`KineticKick::new`].
@@ -79,10 +75,8 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> KineticKick<G, S, K> {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
-        self.t.set(t);
+        self.state.reset(t, g);
         self.mu = mu;
-        self.g = g;
-        self.unnormalized = 0;
         Ok(())
     }
     /// The scheme.
@@ -103,10 +97,10 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let mut mu = self.mu.clone();
-        let mut g = self.g.clone();
+        let mut g = self.state.g.clone();
         let (a, b) = (self.scheme.a(), self.scheme.b());
         // The kicks' time: t_k advanced by the kinetic flows (t' = 1 belongs to the kinetic part).
-        let mut t = self.t.now();
+        let mut t = self.state.now();
         for (i, &ai) in a.iter().enumerate() {
             kick(&self.system, t, ai * h, &mut mu, g.as_ref())?;
             if let Some(&bi) = b.get(i) {
@@ -120,55 +114,14 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> Integrator for KineticKick<G,
             });
         }
         // Each flow moves g by an exact group element, so g leaves the group only by a random walk
-        // of roundings: renormalized every RENORMALIZE_EVERY steps, not at each (which would bias
+        // of roundings: renormalized rarely (crate::step_state), not at each (which would bias
         // the spatial momentum map, as for Lie–Poisson).
-        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
-        if let Some(g1) = g.as_mut() {
-            if renormalize {
-                *g1 = g1.normalize();
-            }
-            if !g1.is_finite() {
-                return Err(IntegratorError::NonFinite {
-                    what: "configuration g_{k+1}",
-                });
-            }
-        }
+        self.state.finish_configuration(&mut g)?;
         self.mu = mu;
-        self.g = g;
-        self.t.advance(h);
-        self.unnormalized = if renormalize {
-            0
-        } else {
-            self.unnormalized + 1
-        };
+        self.state.commit(h, g);
         Ok(())
     }
-    fn time(&self) -> f64 {
-        self.t.now()
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.mu.clone()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.system.velocity(&self.mu)
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(
-            &self.system,
-            self.time(),
-            &self.momentum(),
-            self.configuration(),
-        )
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.g.as_ref()
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.mu, self.g.as_ref())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.mu)
-    }
+    state_accessors!(mu);
     fn method_name(&self) -> String {
         format!("kinetic-kick({})", self.scheme.name())
     }
@@ -208,7 +161,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> StateSnapshot for KineticKick
     /// (t, μ, g).
     type State = (f64, G::Algebra, Option<G>);
     fn snapshot(&self) -> Self::State {
-        (self.t.now(), self.mu.clone(), self.g.clone())
+        (self.state.now(), self.mu.clone(), self.state.g.clone())
     }
     fn restore(&mut self, (t, mu, g): Self::State) -> Result<(), IntegratorError> {
         self.reset(t, mu, g)
@@ -217,7 +170,7 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> StateSnapshot for KineticKick
         if !t.is_finite() {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
-        self.t.set(t);
+        self.state.t.set(t);
         Ok(())
     }
 }

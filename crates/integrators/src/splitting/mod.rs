@@ -58,14 +58,16 @@ mod strang;
 
 pub use kick::KICK_MAX_ITERATIONS;
 
-/// A splitting renormalizes g onto the group every this many steps. Each piece's flow multiplies
-/// g by an exact group element, so in between g leaves the group only by a random walk of
-/// roundings — a few rotations per step (three and one Rodrigues product for the free body),
-/// ‖gᵀg − I‖ ≈ ε√(4k) ≲ 1e-14 here —
-/// while renormalizing at every step would round g once more per step, with a bias that the
-/// spatial momentum map accumulates (as for Lie–Poisson, whose products are one per step:
-/// [`crate::lie_poisson::RENORMALIZE_EVERY`]).
-pub const RENORMALIZE_EVERY: u32 = 256;
+/// The rounded products a splitting step forms g_{k+1} in, as far as its renormalization is
+/// concerned (crate::step_state): each piece's flow multiplies g by an exact group element — three
+/// rotations and one Rodrigues product for the free body — so g leaves the group by a random walk
+/// of about this many roundings a step.
+pub(crate) const PRODUCTS_PER_STEP: u32 = 4;
+
+/// A splitting renormalizes g onto the group every this many steps: once
+/// [`crate::RENORMALIZE_AFTER`] rounded products have accumulated (four a step),
+/// ‖gᵀg − I‖ ≈ ε√(4k) ≲ 1e-14 in between.
+pub const RENORMALIZE_EVERY: u32 = crate::step_state::renormalize_every(PRODUCTS_PER_STEP);
 pub use kinetic_kick::{KineticFlow, KineticKick};
 pub use scheme::SplittingScheme;
 pub use split_system::SplitSystem;

@@ -2,10 +2,10 @@
 
 use super::kick::kick;
 use super::SplitSystem;
-use super::RENORMALIZE_EVERY;
+use super::PRODUCTS_PER_STEP;
 use crate::checks::check_state;
-use crate::clock::Clock;
 use crate::compose::{StateSnapshot, SymmetricMethod};
+use crate::step_state::{state_accessors, StepState};
 use crate::{Integrator, IntegratorError, MethodInfo};
 use core::marker::PhantomData;
 use lie_groups::{LieGroup, Vector};
@@ -55,11 +55,9 @@ use lie_groups::{LieGroup, Vector};
 #[derive(Debug, Clone)]
 pub struct Splitting<G: LieGroup, S: SplitSystem<G>> {
     system: S,
-    t: Clock,
     mu: G::Algebra,
-    g: Option<G>,
-    /// Steps since g was last renormalized ([`RENORMALIZE_EVERY`]).
-    unnormalized: u32,
+    /// t, g and g's renormalization ([`PRODUCTS_PER_STEP`]).
+    state: StepState<G>,
     /// First same as last: the state (μ, g) before the last step's closing outer half-flow, and
     /// that half-flow's time `lag`, which the next step merges with its own opening one (the
     /// outer flow is a one-parameter group in its time: `φ_{s'} ∘ φ_s = φ_{s+s'}`). After a
@@ -86,13 +84,11 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
         check_state(&system, &mu0, "momentum μ", g0.as_ref())?;
         Ok(Self {
             system,
-            t: Clock::at(0.0),
             lead_mu: mu0.clone(),
             lead_g: g0.clone(),
             lag: 0.0,
             mu: mu0,
-            g: g0,
-            unnormalized: 0,
+            state: StepState::new(g0, PRODUCTS_PER_STEP),
             _group: PhantomData,
         })
     }
@@ -102,13 +98,11 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         check_state(&self.system, &mu, "momentum μ", g.as_ref())?;
-        self.t.set(t);
+        self.state.reset(t, g.clone());
         self.lead_mu = mu.clone();
-        self.lead_g = g.clone();
+        self.lead_g = g;
         self.lag = 0.0;
         self.mu = mu;
-        self.g = g;
-        self.unnormalized = 0;
         Ok(())
     }
     /// The system.
@@ -118,15 +112,14 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
 
     /// The Strang step of a single kinetic piece without kick: its exact flow.
     fn commit_single(&mut self, h: f64) -> Result<(), IntegratorError> {
-        let (mut mu, mut g) = (self.mu.clone(), self.g.clone());
+        let (mut mu, mut g) = (self.mu.clone(), self.state.g.clone());
         self.system.piece_flow(0, h, &mut mu, g.as_mut());
         self.commit(h, mu, g, None)
     }
 
-    /// Checks the new state (μ, g) and takes it, with the FSAL state; renormalizes g every
-    /// [`RENORMALIZE_EVERY`] steps. Each flow moves g by an exact group element, so g leaves the
-    /// group only by a random walk of roundings: renormalized every so many steps, not at each
-    /// (which would bias the spatial momentum map, as for Lie–Poisson).
+    /// Checks the new state (μ, g) and takes it, with the FSAL state. Each flow moves g by an
+    /// exact group element, so g leaves the group only by a random walk of roundings:
+    /// renormalized rarely, not at each step (crate::step_state), the FSAL g with it.
     fn commit(
         &mut self,
         h: f64,
@@ -139,18 +132,10 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
                 what: "momentum μ_{k+1}",
             });
         }
-        let renormalize = self.unnormalized + 1 >= RENORMALIZE_EVERY;
-        if let Some(g1) = g.as_mut() {
-            if renormalize {
-                *g1 = g1.normalize();
-                if let Some((_, Some(g0))) = lead.as_mut() {
-                    *g0 = g0.normalize();
-                }
-            }
-            if !g1.is_finite() {
-                return Err(IntegratorError::NonFinite {
-                    what: "configuration g_{k+1}",
-                });
+        self.state.finish_configuration(&mut g)?;
+        if self.state.renormalizes() {
+            if let Some((_, Some(g0))) = lead.as_mut() {
+                *g0 = g0.normalize();
             }
         }
         if let Some((lead_mu, lead_g)) = lead {
@@ -159,13 +144,7 @@ impl<G: LieGroup, S: SplitSystem<G>> Splitting<G, S> {
             self.lag = 0.5 * h;
         }
         self.mu = mu;
-        self.g = g;
-        self.t.advance(h);
-        self.unnormalized = if renormalize {
-            0
-        } else {
-            self.unnormalized + 1
-        };
+        self.state.commit(h, g);
         Ok(())
     }
 }
@@ -190,10 +169,10 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
         let (mut mu, mut g, opening) = if merges {
             (self.lead_mu.clone(), self.lead_g.clone(), self.lag + half)
         } else {
-            (self.mu.clone(), self.g.clone(), half)
+            (self.mu.clone(), self.state.g.clone(), half)
         };
         let first = if kicked {
-            kick(system, self.t.now(), opening, &mut mu, g.as_ref())?;
+            kick(system, self.state.now(), opening, &mut mu, g.as_ref())?;
             0
         } else {
             system.piece_flow(0, opening, &mut mu, g.as_mut());
@@ -210,38 +189,13 @@ impl<G: LieGroup, S: SplitSystem<G>> Integrator for Splitting<G, S> {
         // next step starts from the state before it (`lead_mu`, `lead_g`).
         let before = merges.then(|| (mu.clone(), g.clone()));
         if kicked {
-            kick(system, self.t.now() + h, half, &mut mu, g.as_ref())?;
+            kick(system, self.state.now() + h, half, &mut mu, g.as_ref())?;
         } else {
             system.piece_flow(0, half, &mut mu, g.as_mut());
         }
         self.commit(h, mu, g, before)
     }
-    fn time(&self) -> f64 {
-        self.t.now()
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.mu.clone()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.system.velocity(&self.mu)
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        crate::dense_output::momentum_rate(
-            &self.system,
-            self.time(),
-            &self.momentum(),
-            self.configuration(),
-        )
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.g.as_ref()
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.mu, self.g.as_ref())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.mu)
-    }
+    state_accessors!(mu);
     fn method_name(&self) -> String {
         "splitting(strang)".into()
     }
@@ -274,7 +228,7 @@ impl<G: LieGroup, S: SplitSystem<G>> StateSnapshot for Splitting<G, S> {
     /// (t, μ, g).
     type State = (f64, G::Algebra, Option<G>);
     fn snapshot(&self) -> Self::State {
-        (self.t.now(), self.mu.clone(), self.g.clone())
+        (self.state.now(), self.mu.clone(), self.state.g.clone())
     }
     fn restore(&mut self, (t, mu, g): Self::State) -> Result<(), IntegratorError> {
         self.reset(t, mu, g)
@@ -283,11 +237,11 @@ impl<G: LieGroup, S: SplitSystem<G>> StateSnapshot for Splitting<G, S> {
         if !t.is_finite() {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
-        self.t.set(t);
+        self.state.t.set(t);
         // The merged opening kick of the next step reads t: a forced system starts afresh.
         if self.system.is_forced() {
             self.lead_mu = self.mu.clone();
-            self.lead_g = self.g.clone();
+            self.lead_g = self.state.g.clone();
             self.lag = 0.0;
         }
         Ok(())

@@ -3,7 +3,7 @@
 //! bias; applied as a matrix, every step added that bias to |Π|² (7e-11 after 10⁶ steps, 5e-10
 //! after 10⁷). Now the step adds the increment `(Ad*_{τ(ξ)} − I)μ`, computed from ξ, to μ once,
 //! with the rounding error carried to the next step (compensated summation), and g is composed in
-//! increment form too, in one product per step, renormalized only every `RENORMALIZE_EVERY` steps
+//! increment form too, in one product per step, renormalized only every `RENORMALIZE_AFTER` steps
 //! (renormalizing at every step rounded g twice per step: 9e-13 after 10⁷ steps).
 
 use integrators::{Integrator, LiePoisson};
@@ -31,7 +31,7 @@ fn drift<T: Tau<So3>>(theta: f64, steps: usize) -> (f64, f64, f64) {
 /// at the rounding of one step (≤ 1e-15; measured 2.2e-16 at every count) and the momentum map
 /// no worse than a random walk of roundings, ≤ 1e-13 at 10⁶ and ≤ 3e-13 at 10⁷ (measured
 /// 1.0–2.4e-14 at 10⁶, 3.2e-14 at 10⁷); R on SO(3) to ‖RᵀR − I‖ ≤ 1e-14 (renormalized every
-/// `RENORMALIZE_EVERY` steps). Renormalizing at every step gave 1.0–1.7e-13 at 10⁶ and 9e-13
+/// `RENORMALIZE_AFTER` steps). Renormalizing at every step gave 1.0–1.7e-13 at 10⁶ and 9e-13
 /// at 10⁷; without the compensation of μ the Casimir was 0.6–1.5e-13 at 10⁶.
 #[test]
 fn casimir_stays_at_round_off_for_any_number_of_small_steps() {
@@ -94,7 +94,7 @@ fn every_solver_kind_reaches_the_same_floor() {
 /// 5.9e-11, with 5.4e-13 at h = 1e-5 after 10⁶ steps) and are the same to three digits for the
 /// default tolerance and for 1e-16 and for Newton and the fixed point — a property of the
 /// scheme, which no solver floor would move. R stays on SO(3) to 1e-14 (one product per step,
-/// renormalized every `RENORMALIZE_EVERY` steps).
+/// renormalized every `RENORMALIZE_AFTER` steps).
 #[test]
 fn euler_poincare_deviations_are_the_methods_not_round_off() {
     use integrators::{EulerPoincare, SolverConfig, SolverKind};

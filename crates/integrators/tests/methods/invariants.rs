@@ -236,7 +236,7 @@ fn solver_kinds_agree() {
 }
 
 /// The reconstructed attitude stays on SO(3) to round-off over 10⁷ steps (free body, h = 0.01,
-/// Lie–Poisson Cayley θ = ½): ‖RᵀR − I‖_max ≤ 1e-14 (renormalized every `RENORMALIZE_EVERY` =
+/// Lie–Poisson Cayley θ = ½): ‖RᵀR − I‖_max ≤ 1e-14 (renormalized every `RENORMALIZE_AFTER` =
 /// 1024 steps, the defect in between is a random walk of at most 1024 roundings; measured
 /// 1.4e-15). Without renormalization the random walk reaches ~1e-12 (docs/long-runs.md).
 #[test]
