@@ -20,6 +20,7 @@
 //! both on the free rigid body and the heavy top, and for `Rkmk4` on SE(3).
 
 mod quaternion_pair;
+mod quaternion_state;
 mod rk4;
 mod rkmk;
 

@@ -15,19 +15,18 @@
 //! through q/|q|, so the next step's first stage is (q̇/|q₁|, Π̇), exactly, without an
 //! evaluation. Stack only, no heap allocation per step.
 
-use super::rk4::{quaternion_rate, rotation};
+use super::quaternion_state::{momentum_rate, quaternion_rate, QuaternionState};
 use crate::adaptive::embedded_pair::check_end_time;
 use crate::adaptive::{
     starting_step, ButcherPair, Controller, Dop853, DormandPrince54, EmbeddedPair, Tolerance,
 };
 use crate::carried_state;
 use crate::checks::check_state;
-use crate::system::force;
+use crate::step_state::state_accessors;
 use crate::unroll::unroll;
 use crate::{Integrator, IntegratorError, MethodInfo, System};
-use core::cell::OnceCell;
 use core::marker::PhantomData;
-use lie_groups::{LieGroup, So3, Vector};
+use lie_groups::So3;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector4};
 
 /// Dormand–Prince 5(4) on (q, Π), scipy's `RK45` on the quaternion equations.
@@ -56,12 +55,9 @@ pub type QuaternionDop853<S> = QuaternionPair<S, Dop853, 12>;
 #[derive(Debug, Clone)]
 pub struct QuaternionPair<S: System<So3>, P: ButcherPair<N>, const N: usize> {
     system: S,
-    t: f64,
     pi: Vector3<f64>,
-    /// The unit quaternion of the attitude, where it is reconstructed.
-    q: Option<Quaternion<f64>>,
-    /// R(q), computed when [`Integrator::configuration`] asks for it; emptied by every step.
-    rotation: OnceCell<So3>,
+    /// t, q and R(q) on demand.
+    state: QuaternionState,
     /// (q̇, Π̇) at the current state where already evaluated (q̇ = 0 without the attitude).
     first: Option<(Quaternion<f64>, Vector3<f64>)>,
     pair: PhantomData<P>,
@@ -84,14 +80,10 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
     /// missing for a system that needs it.
     pub fn new(system: S, pi0: Vector3<f64>, r0: Option<So3>) -> Result<Self, IntegratorError> {
         check_state(&system, &pi0, "momentum Π", r0.as_ref())?;
-        let q = r0.map(|r| UnitQuaternion::from(r).into_inner());
-        let rotation = r0.map_or_else(OnceCell::new, OnceCell::from);
         Ok(Self {
             system,
-            t: 0.0,
             pi: pi0,
-            q,
-            rotation,
+            state: QuaternionState::new(r0),
             first: None,
             pair: PhantomData,
         })
@@ -102,7 +94,7 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
     }
     /// The unit quaternion of the attitude, where it is reconstructed.
     pub fn quaternion(&self) -> Option<UnitQuaternion<f64>> {
-        self.q.map(UnitQuaternion::new_unchecked)
+        self.state.quaternion()
     }
 
     /// (q̇, Π̇) at a stage, Ω = `v(Π)`; q̇ = 0 without the attitude.
@@ -115,18 +107,7 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
         pi: &Vector3<f64>,
     ) -> (Quaternion<f64>, Vector3<f64>) {
         let omega = v(pi);
-        let mut dpi = So3::ad_dual_apply(&omega, pi);
-        if self.system.has_potential() || self.system.is_forced() {
-            let r = q
-                .filter(|_| self.system.needs_configuration())
-                .map(rotation);
-            if let Some(f) = force(&self.system, r.as_ref()) {
-                dpi += f;
-            }
-            if self.system.is_forced() {
-                dpi += self.system.external_force(t, r.as_ref(), &omega);
-            }
-        }
+        let dpi = momentum_rate(&self.system, t, q, pi, &omega);
         let dq = q.map_or(Quaternion::new(0.0, 0.0, 0.0, 0.0), |q| {
             quaternion_rate(q, &omega)
         });
@@ -145,6 +126,7 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
     ) -> Candidate {
         let pi = carried_state::read(&self.pi);
         let q = self
+            .state
             .q
             .map(|q| Quaternion::from(carried_state::read(&q.coords)));
         let mut ls = [Quaternion::<f64>::new(0.0, 0.0, 0.0, 0.0); N];
@@ -164,7 +146,7 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
             });
             let q_i = q.map(|q| Quaternion::from(q.coords + dq * h));
             let pi_i = pi + dpi * h;
-            let (l, k) = self.rates(v, self.t + P::C[I] * h, q_i.as_ref(), &pi_i);
+            let (l, k) = self.rates(v, self.state.now() + P::C[I] * h, q_i.as_ref(), &pi_i);
             if P::FSAL && I == N - 1 && *b == P::B {
                 last = Some((l, k));
             }
@@ -235,8 +217,8 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
         }
         let first = self.rates(
             &|pi: &Vector3<f64>| self.system.velocity(pi),
-            self.t,
-            self.q.as_ref(),
+            self.state.now(),
+            self.state.q.as_ref(),
             &self.pi,
         );
         self.first = Some(first);
@@ -267,42 +249,25 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> QuaternionPair<S, P, N> 
         self.stages(&|pi| self.system.velocity(pi), h, first, b, tolerance)
     }
 
-    /// Takes the candidate (q renormalized), the time becoming `t1`; `Err` where it is not
+    /// Takes the candidate of size h (q renormalized), the time becoming `t1` (an adaptive
+    /// step's chosen end) or advanced by h on the clock (a fixed step); `Err` where it is not
     /// finite (state untouched).
     #[inline(always)]
-    fn commit(&mut self, c: Candidate, t1: f64) -> Result<(), IntegratorError> {
-        let norm = c.q1.map_or(1.0, |q| q.norm());
-        if !(c.pi1.is_finite() && norm.is_finite() && norm > 0.0) {
-            return Err(IntegratorError::NonFinite {
-                what: "Runge–Kutta state (q, Π)_{k+1}",
-            });
-        }
-        self.q = c.q1.map(|q| q / norm);
-        self.rotation = OnceCell::new();
+    fn commit(&mut self, c: Candidate, h: f64, t1: Option<f64>) -> Result<(), IntegratorError> {
+        let norm = QuaternionState::check(c.q1.as_ref(), &c.pi1)?;
+        self.state.commit(c.q1, norm, h, t1);
         self.pi = c.pi1;
         // The last stage's rates at the unnormalized q₁: q̇ is linear in q, Π̇ reads q/|q|.
         self.first = c.last.map(|(l, k)| (l / norm, k));
-        self.t = t1;
         Ok(())
     }
 
     /// A fixed step of the embedded solution (weights b − e, or b − e_low with `low`), for
     /// measuring the embedded orders (`tests/methods/adaptive_orders.rs`).
     pub fn step_embedded(&mut self, h: f64, low: bool) -> Result<(), IntegratorError> {
-        let weights = match (low, P::E_LOW) {
-            (false, _) => P::E,
-            (true, Some(e)) => e,
-            (true, None) => {
-                return Err(IntegratorError::InvalidParameter {
-                    reason: format!("{} has one error estimator", P::NAME),
-                })
-            }
-        };
-        let t1 = self.t + h;
-        check_end_time(self.t, t1)?;
-        let b_hat: [f64; N] = core::array::from_fn(|i| P::B[i] - weights[i]);
+        let b_hat = P::embedded_weights(low)?;
         let c = self.candidate(h, &b_hat, None);
-        self.commit(c, t1)
+        self.commit(c, h, None)
     }
 }
 
@@ -314,31 +279,9 @@ impl<S: System<So3>, P: ButcherPair<N>, const N: usize> Integrator for Quaternio
             return Err(IntegratorError::NonFinite { what: "step h" });
         }
         let c = self.candidate(h, &P::B, None);
-        self.commit(c, self.t + h)
+        self.commit(c, h, None)
     }
-    fn time(&self) -> f64 {
-        self.t
-    }
-    fn momentum(&self) -> Vector3<f64> {
-        self.pi
-    }
-    fn velocity(&self) -> Vector3<f64> {
-        self.system.velocity(&self.pi)
-    }
-    fn momentum_rate(&self) -> Vector3<f64> {
-        crate::dense_output::momentum_rate(&self.system, self.t, &self.pi, self.configuration())
-    }
-    fn configuration(&self) -> Option<&So3> {
-        self.q
-            .as_ref()
-            .map(|q| self.rotation.get_or_init(|| rotation(q)))
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.pi, self.configuration())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.pi)
-    }
+    state_accessors!(pi);
     fn method_name(&self) -> String {
         format!("{}(quaternion)", P::NAME)
     }
@@ -363,25 +306,25 @@ impl<S: System<So3> + Clone, P: ButcherPair<N>, const N: usize> EmbeddedPair
     }
     #[inline]
     fn try_step_to(&mut self, t1: f64, tolerance: &Tolerance) -> Result<f64, IntegratorError> {
-        let h = check_end_time(self.t, t1)?;
+        let h = check_end_time(self.state.now(), t1)?;
         let c = self.candidate(h, &P::B, Some(tolerance));
         let err = P::error_norm(c.sum, c.sum_low, c.n);
         if !err.is_finite() {
             return Ok(f64::INFINITY);
         }
-        if err <= 1.0 && self.commit(c, t1).is_err() {
+        if err <= 1.0 && self.commit(c, h, Some(t1)).is_err() {
             return Ok(f64::INFINITY);
         }
         Ok(err)
     }
     fn step_to(&mut self, t1: f64) -> Result<(), IntegratorError> {
-        let h = check_end_time(self.t, t1)?;
+        let h = check_end_time(self.state.now(), t1)?;
         let c = self.candidate(h, &P::B, None);
-        self.commit(c, t1)
+        self.commit(c, h, Some(t1))
     }
     fn starting_step(&mut self, direction: f64, tolerance: &Tolerance) -> f64 {
         let (l0, k0) = self.first_stage();
-        let (pi0, q0) = (self.pi, self.q);
+        let (pi0, q0) = (self.pi, self.state.q);
         let count = if q0.is_some() { 7.0 } else { 3.0 };
         let norm = |y_pi: &Vector3<f64>, y_q: Option<Vector4<f64>>| {
             let mut s = (0..3)
@@ -402,7 +345,7 @@ impl<S: System<So3> + Clone, P: ButcherPair<N>, const N: usize> EmbeddedPair
             let q1 = q0.map(|q| Quaternion::from(q.coords + l0.coords * h));
             let (l1, k1) = self.rates(
                 &|pi: &Vector3<f64>| self.system.velocity(pi),
-                self.t + h,
+                self.state.now() + h,
                 q1.as_ref(),
                 &(pi0 + k0 * h),
             );

@@ -17,14 +17,13 @@
 //! h halves, see docs/work-precision.md), the price of its order 4 and its low cost. Stack only,
 //! no heap allocation per step.
 
+use super::quaternion_state::{momentum_rate, quaternion_rate, QuaternionState};
 use crate::carried_state;
 use crate::checks::check_state;
-use crate::clock::Clock;
-use crate::system::force;
+use crate::step_state::state_accessors;
 use crate::{Integrator, IntegratorError, System};
-use core::cell::OnceCell;
-use lie_groups::{LieGroup, So3, Vector};
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use lie_groups::{So3, Vector};
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 /// Explicit RK4 on (q, Π) with quaternion renormalisation after each step, for any system on SO(3).
 ///
@@ -46,45 +45,9 @@ use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 #[derive(Debug, Clone)]
 pub struct QuaternionRk4<S: System<So3>> {
     system: S,
-    t: Clock,
     pi: Vector3<f64>,
-    /// The unit quaternion of the attitude, where it is reconstructed.
-    q: Option<Quaternion<f64>>,
-    /// The rotation matrix R(q), computed only when [`Integrator::configuration`] asks for it (a
-    /// cell, so that it can return a reference); emptied by every step.
-    rotation: OnceCell<So3>,
-}
-
-/// `½ q ⊗ (0, Ω)`: the quaternion velocity of `Ṙ = R Ω̂`.
-#[inline]
-pub(crate) fn quaternion_rate(q: &Quaternion<f64>, omega: &Vector3<f64>) -> Quaternion<f64> {
-    (q * Quaternion::from_imag(*omega)) * 0.5
-}
-
-/// The rotation R(q/|q|) of a nonzero quaternion, from the homogeneous form
-/// `R = (1/|q|²)·[(w² − |v|²)I + 2vvᵀ + 2w v̂]`, q = (w, v): no square root, one division.
-///
-/// The products of q's entries are formed before they are scaled by s = 2/|q|², so the division
-/// runs beside them instead of ahead of them: in a stage of a system with a potential, R is on
-/// the step's critical path (the force at the next stage waits for it).
-#[inline]
-pub(crate) fn rotation(q: &Quaternion<f64>) -> So3 {
-    let (w, x, y, z) = (q.w, q.i, q.j, q.k);
-    let s = 2.0 / (w * w + x * x + y * y + z * z);
-    let (wx, wy, wz) = (w * x, w * y, w * z);
-    let (xx, xy, xz) = (x * x, x * y, x * z);
-    let (yy, yz, zz) = (y * y, y * z, z * z);
-    So3::from_matrix_unchecked(&Matrix3::new(
-        1.0 - (yy + zz) * s,
-        (xy - wz) * s,
-        (xz + wy) * s,
-        (xy + wz) * s,
-        1.0 - (xx + zz) * s,
-        (yz - wx) * s,
-        (xz - wy) * s,
-        (yz + wx) * s,
-        1.0 - (xx + yy) * s,
-    ))
+    /// t, q and R(q) on demand.
+    state: QuaternionState,
 }
 
 impl<S: System<So3>> QuaternionRk4<S> {
@@ -92,15 +55,10 @@ impl<S: System<So3>> QuaternionRk4<S> {
     /// missing for a system with a potential.
     pub fn new(system: S, pi0: Vector3<f64>, r0: Option<So3>) -> Result<Self, IntegratorError> {
         check_state(&system, &pi0, "momentum Π", r0.as_ref())?;
-        // R₀ is kept exactly as given (not re-derived from q₀) until the first step.
-        let q = r0.map(|r| UnitQuaternion::from(r).into_inner());
-        let rotation = r0.map_or_else(OnceCell::new, OnceCell::from);
         Ok(Self {
             system,
-            t: Clock::at(0.0),
             pi: pi0,
-            q,
-            rotation,
+            state: QuaternionState::new(r0),
         })
     }
     /// The system.
@@ -109,7 +67,7 @@ impl<S: System<So3>> QuaternionRk4<S> {
     }
     /// The unit quaternion of the attitude, where it is reconstructed.
     pub fn quaternion(&self) -> Option<UnitQuaternion<f64>> {
-        self.q.map(UnitQuaternion::new_unchecked)
+        self.state.quaternion()
     }
 
     /// The RK4 step of Π alone (nothing reads R: the momentum equation does not involve it), out
@@ -117,7 +75,11 @@ impl<S: System<So3>> QuaternionRk4<S> {
     #[inline(never)]
     fn momentum_step(&self, h: f64) -> Vector3<f64> {
         let (pi, half) = (self.pi, 0.5 * h);
-        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
+        let (t0, tm, t1) = (
+            self.state.now(),
+            self.state.now() + half,
+            self.state.now() + h,
+        );
         let v = |pi: &Vector3<f64>| self.system.velocity(pi);
         let [_, k1] = self.momentum_rate(&v, t0, None, &pi);
         let [_, k2] = self.momentum_rate(&v, tm, None, &(pi + k1 * half));
@@ -139,7 +101,11 @@ impl<S: System<So3>> QuaternionRk4<S> {
         pi: Vector3<f64>,
     ) -> (Quaternion<f64>, Vector3<f64>) {
         let half = 0.5 * h;
-        let (t0, tm, t1) = (self.t.now(), self.t.now() + half, self.t.now() + h);
+        let (t0, tm, t1) = (
+            self.state.now(),
+            self.state.now() + half,
+            self.state.now() + h,
+        );
         let (l1, k1) = self.rate(v, t0, &q, &pi);
         let (l2, k2) = self.rate(v, tm, &(q + l1 * half), &(pi + k1 * half));
         let (l3, k3) = self.rate(v, tm, &(q + l2 * half), &(pi + k2 * half));
@@ -187,18 +153,7 @@ impl<S: System<So3>> QuaternionRk4<S> {
         pi: &Vector3<f64>,
     ) -> [Vector3<f64>; 2] {
         let omega = v(pi);
-        let mut dpi = So3::ad_dual_apply(&omega, pi);
-        if self.system.has_potential() || self.system.is_forced() {
-            let r = q
-                .filter(|_| self.system.needs_configuration())
-                .map(rotation);
-            if let Some(f) = force(&self.system, r.as_ref()) {
-                dpi += f;
-            }
-            if self.system.is_forced() {
-                dpi += self.system.external_force(t, r.as_ref(), &omega);
-            }
-        }
+        let dpi = momentum_rate(&self.system, t, q, pi, &omega);
         [omega, dpi]
     }
 }
@@ -213,6 +168,7 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
         // Π and q as the last step stored them, entry by entry (crate::carried_state).
         let pi = carried_state::read(&self.pi);
         match self
+            .state
             .q
             .map(|q| Quaternion::from(carried_state::read(&q.coords)))
         {
@@ -224,6 +180,7 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
                     });
                 }
                 self.pi = pi1;
+                self.state.commit(None, 1.0, h, None);
             }
             Some(q) => {
                 // The system's shape is tested once per step, not in each stage: a diagonal
@@ -233,49 +190,15 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
                     Some(a) => self.attitude_step(&|pi| pi.component_mul(&a), h, q, pi),
                     None => self.general_attitude_step(h, q, pi),
                 };
-                let n = q1.norm();
-                if !(Vector::is_finite(&pi1) && n.is_finite() && n > 0.0) {
-                    return Err(IntegratorError::NonFinite {
-                        what: "RK4 state (q, Π)_{k+1}",
-                    });
-                }
                 // Renormalisation: the one projection this baseline makes.
-                self.q = Some(q1 / n);
-                self.rotation = OnceCell::new();
+                let norm = QuaternionState::check(Some(&q1), &pi1)?;
                 self.pi = pi1;
+                self.state.commit(Some(q1), norm, h, None);
             }
         }
-        self.t.advance(h);
         Ok(())
     }
-    fn time(&self) -> f64 {
-        self.t.now()
-    }
-    fn momentum(&self) -> Vector3<f64> {
-        self.pi
-    }
-    fn velocity(&self) -> Vector3<f64> {
-        self.system.velocity(&self.pi)
-    }
-    fn momentum_rate(&self) -> Vector3<f64> {
-        crate::dense_output::momentum_rate(
-            &self.system,
-            self.time(),
-            &self.momentum(),
-            self.configuration(),
-        )
-    }
-    fn configuration(&self) -> Option<&So3> {
-        self.q
-            .as_ref()
-            .map(|q| self.rotation.get_or_init(|| rotation(q)))
-    }
-    fn energy(&self) -> f64 {
-        self.system.energy(&self.pi, self.configuration())
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.system.casimir(&self.pi)
-    }
+    state_accessors!(pi);
     fn method_name(&self) -> String {
         "rk4(quaternion)".into()
     }
@@ -283,24 +206,5 @@ impl<S: System<So3>> Integrator for QuaternionRk4<S> {
     /// nothing else is kept.
     fn info(&self) -> crate::MethodInfo {
         crate::MethodInfo::plain(4)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The homogeneous formula against nalgebra's normalise-then-convert, for unit and scaled q.
-    #[test]
-    fn rotation_of_a_scaled_quaternion_is_that_of_the_unit_one() {
-        for (q, scale) in [
-            (Quaternion::new(0.3, -0.5, 0.8, 0.1), 1.0),
-            (Quaternion::new(-0.9, 0.1, 0.2, -0.4), 3.7),
-            (Quaternion::new(1e-3, 1.0, -2.0, 0.5), 1e-5),
-        ] {
-            let want = So3::from(UnitQuaternion::from_quaternion(q));
-            let got = rotation(&(q * scale));
-            assert!((got.as_matrix() - want.as_matrix()).amax() < 4e-16);
-        }
     }
 }

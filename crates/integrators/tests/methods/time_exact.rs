@@ -3,7 +3,8 @@
 //! a force schedule sees the right t. Plain accumulation fails these tests: 2000 steps of 0.05
 //! end at 99.99999999999646 (checked by replacing `Clock::advance` by `t += h`).
 
-use integrators::baselines::QuaternionRk4;
+use integrators::adaptive::RkmkDop853;
+use integrators::baselines::{QuaternionDopri5, QuaternionRk4};
 use integrators::dense_output::integrate_dense;
 use integrators::processing::{ComposedKernel, Processed, ProcessingScheme};
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
@@ -70,6 +71,21 @@ fn every_method(h: f64, n: usize, end: f64) {
         end,
     );
     ends_on_time("rkmk4", Rkmk4::new(top(), PI0, g).unwrap(), h, n, end);
+    // The embedded pairs' fixed steps too (their adaptive steps land on chosen end times).
+    ends_on_time(
+        "quaternion dopri5, fixed steps",
+        QuaternionDopri5::new(top(), PI0, g).unwrap(),
+        h,
+        n,
+        end,
+    );
+    ends_on_time(
+        "rkmk dop853, fixed steps",
+        RkmkDop853::new(body(), PI0, g).unwrap(),
+        h,
+        n,
+        end,
+    );
     ends_on_time(
         "gragg-bulirsch-stoer",
         GraggBulirschStoer::new(body(), PI0, g).unwrap(),
