@@ -37,6 +37,7 @@ fn show_progress() -> bool {
     !quiet() && std::io::stderr().is_terminal()
 }
 
+mod batched;
 mod bounds;
 mod build;
 mod choose;
@@ -184,7 +185,9 @@ enum Command {
     },
     /// Run the scene's [sweep] ensemble (rayon) and write one summary row per trajectory as CSV.
     ///
-    /// Bit-identical whatever the thread count or shard split. See docs/ensembles.md.
+    /// Bit-identical whatever the thread count or shard split. Where the method has a batched
+    /// (SIMD) version and the system is a rigid body in principal axes, free or in a uniform
+    /// field, the members are stepped N at a time (`batch` crate). See docs/ensembles.md.
     Sweep {
         /// The scene file (TOML) with a [sweep] table.
         scene: PathBuf,
@@ -204,6 +207,10 @@ enum Command {
         /// Replace the sweep's seed.
         #[arg(long)]
         seed: Option<u64>,
+        /// Step every member with the scalar method, even where a batched one exists (the two
+        /// agree to a few ulps; the path is part of the sweep's fingerprint).
+        #[arg(long)]
+        scalar: bool,
         #[command(flatten)]
         overrides: OverrideArgs,
     },
@@ -730,6 +737,7 @@ fn cmd_sweep(
     threads: Option<u32>,
     count: Option<u64>,
     seed: Option<u64>,
+    scalar: bool,
     overrides: OverrideArgs,
 ) -> Result<(), SimError> {
     let (mut scene, stem) = load(Some(scene_path), overrides)?;
@@ -757,19 +765,20 @@ fn cmd_sweep(
         b.enable_steady_tick(std::time::Duration::from_millis(200));
         b
     });
-    let ran = sweep::run(&scene, shard, threads.map(|t| t as usize));
+    let ran = sweep::run(&scene, shard, threads.map(|t| t as usize), scalar);
     if let Some(b) = spinner {
         b.finish_and_clear();
     }
     let (result, spec2, wall) = ran?;
     debug_assert_eq!(spec, spec2);
-    let fp = sweep::fingerprint(&scene, &spec, steps, h);
+    let fp = sweep::fingerprint(&scene, &spec, steps, h, result.path.is_batched());
     sweep::write(&out, &sweep::to_csv(&result, spec.count, shard, fp))?;
 
     let k = result.rows.len();
     say!("lie-sim sweep: {} ({})", scene.name, scene.source);
     say!("  system       {}", scene.system.kind());
     say!("  method       {}", scene.method);
+    say!("  path         {}", result.path);
     say!(
         "  members      {} {} (seed {}); shard {shard} (0-based): {k} trajectories",
         spec.count,
@@ -1042,8 +1051,9 @@ fn main() -> ExitCode {
             threads,
             count,
             seed,
+            scalar,
             overrides,
-        }) => cmd_sweep(&scene, out, shard, threads, count, seed, overrides),
+        }) => cmd_sweep(&scene, out, shard, threads, count, seed, scalar, overrides),
         Some(Command::Merge { shards, out }) => cmd_merge(&shards, &out),
         Some(Command::Choose {
             scene,

@@ -121,6 +121,13 @@ pub trait Model: Sync + 'static {
     ) -> Has<V::Out<Self::G>> {
         Err(Missing::default())
     }
+    /// The body a batch of N copies carries (`batch::BodyModel`: a rigid body in principal axes,
+    /// free or in a uniform field, unforced) and the attitude g₀ as a rotation (the identity
+    /// where the run does not reconstruct g: the batch carries R all the same, and the free
+    /// body's Π does not read it), for the sweep's batched path.
+    fn batch_body(&self, _g0: Option<&Self::G>) -> Has<(batch::BodyModel, So3)> {
+        Err(Missing::default())
+    }
     /// The free rigid body, unforced.
     fn free_body<V: FreeBodyVisitor>(
         &self,

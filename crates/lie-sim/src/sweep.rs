@@ -25,6 +25,7 @@
 //! initial_energy,max_energy_error,max_casimir_error`; then one row per member in index order,
 //! floats in shortest round-trip form. Read it with e.g. `pandas.read_csv(path, comment="#")`.
 
+use crate::batched::Plan;
 use crate::error::SimError;
 use crate::methods::spec::SolverOptions;
 use crate::methods::wrap::BuildError;
@@ -58,6 +59,34 @@ pub struct SweepOutput {
     pub max_casimir_error: Option<f64>,
     /// The first failure, `index: message`, if any member failed.
     pub first_failure: Option<String>,
+    /// How the members were stepped.
+    pub path: SweepPath,
+}
+
+/// How a sweep's members were stepped (`crate::batched`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum SweepPath {
+    /// N at a time by the method's batched version, on this instruction set.
+    Batched(batch::Level),
+    /// One scalar integrator per member, and why not batched.
+    Scalar(Option<String>),
+}
+
+impl SweepPath {
+    /// Whether batched (part of the fingerprint: the paths agree to ulps, not bits).
+    pub fn is_batched(&self) -> bool {
+        matches!(self, Self::Batched(_))
+    }
+}
+
+impl std::fmt::Display for SweepPath {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Batched(level) => write!(f, "batched ({level}, {} lanes)", level.lanes()),
+            Self::Scalar(None) => f.write_str("scalar"),
+            Self::Scalar(Some(why)) => write!(f, "scalar ({why})"),
+        }
+    }
 }
 
 /// The [`Job`] of a sweep: draws the members around μ₀ and runs one shard of the ensemble.
@@ -69,6 +98,8 @@ struct SweepJob<'a> {
     pool: Option<&'a rayon::ThreadPool>,
     method: &'a MethodSpec,
     solver: &'a SolverOptions,
+    /// The scalar path even where a batched one exists (`--scalar`).
+    scalar: bool,
     /// `<kind> with <method>`, for errors.
     what: String,
 }
@@ -126,6 +157,34 @@ impl SweepJob<'_> {
                     .collect::<Result<_, _>>()?
             }
         };
+        let plan = if self.scalar {
+            Err(crate::model::Missing::because("--scalar"))
+        } else {
+            Plan::new(self.method, model, g0.as_ref())
+        };
+        let why_scalar = match plan {
+            Ok(plan) => {
+                let run = |execution| {
+                    plan.run(
+                        &members,
+                        &indices,
+                        self.h,
+                        self.steps,
+                        self.spec.monitor_every,
+                        execution,
+                    )
+                };
+                let summaries = match self.pool {
+                    None => run(Execution::Sequential),
+                    Some(pool) => pool.install(|| run(Execution::Parallel)),
+                }
+                .map_err(|e| IntegratorError::InvalidParameter {
+                    reason: format!("batched sweep: {e}"),
+                })?;
+                return Ok(output(&summaries, dim, SweepPath::Batched(plan.level())));
+            }
+            Err(missing) => missing.0,
+        };
         let ensemble =
             Ensemble::new(members, self.h, self.steps)?.monitor_every(self.spec.monitor_every);
         let method = self.method;
@@ -147,32 +206,36 @@ impl SweepJob<'_> {
         for (summary, &index) in summaries.iter_mut().zip(&indices) {
             summary.index = index;
         }
-        let completed: Vec<&Summary<Alg<G<M>>>> = summaries
+        Ok(output(&summaries, dim, SweepPath::Scalar(why_scalar)))
+    }
+}
+
+/// The output of a shard from its members' summaries.
+fn output<A: Vector>(summaries: &[Summary<A>], dim: usize, path: SweepPath) -> SweepOutput {
+    let completed: Vec<&Summary<A>> = summaries
+        .iter()
+        .filter(|s| s.status.is_completed())
+        .collect();
+    let first_failure = summaries.iter().find_map(|s| match &s.status {
+        integrators::ensemble::Status::Completed => None,
+        integrators::ensemble::Status::StepFailed { step, error } => {
+            Some(format!("member {}: step {step}: {error}", s.index))
+        }
+        integrators::ensemble::Status::BuildFailed(e) => Some(format!("member {}: {e}", s.index)),
+    });
+    SweepOutput {
+        header: Summary::<A>::csv_header(dim),
+        rows: summaries.iter().map(|s| s.csv_row(dim)).collect(),
+        completed: completed.len(),
+        max_energy_error: completed
             .iter()
-            .filter(|s| s.status.is_completed())
-            .collect();
-        let first_failure = summaries.iter().find_map(|s| match &s.status {
-            integrators::ensemble::Status::Completed => None,
-            integrators::ensemble::Status::StepFailed { step, error } => {
-                Some(format!("member {}: step {step}: {error}", s.index))
-            }
-            integrators::ensemble::Status::BuildFailed(e) => {
-                Some(format!("member {}: {e}", s.index))
-            }
-        });
-        Ok(SweepOutput {
-            header: Summary::<Alg<G<M>>>::csv_header(dim),
-            rows: summaries.iter().map(|s| s.csv_row(dim)).collect(),
-            completed: completed.len(),
-            max_energy_error: completed
-                .iter()
-                .fold(0.0f64, |m, s| m.max(s.max_energy_error)),
-            max_casimir_error: completed
-                .iter()
-                .filter_map(|s| s.max_casimir_error)
-                .reduce(f64::max),
-            first_failure,
-        })
+            .fold(0.0f64, |m, s| m.max(s.max_energy_error)),
+        max_casimir_error: completed
+            .iter()
+            .filter_map(|s| s.max_casimir_error)
+            .reduce(f64::max),
+        first_failure,
+        path,
     }
 }
 
@@ -201,11 +264,19 @@ pub fn plan(scene: &Scene) -> Result<(SweepSpec, usize, f64), SimError> {
     Ok((spec, steps, scene.duration / n as f64))
 }
 
-/// FNV-1a (64 bits) of the description of everything that determines a sweep's rows.
-pub fn fingerprint(scene: &Scene, spec: &SweepSpec, steps: usize, h: f64) -> u64 {
+/// FNV-1a (64 bits) of the description of everything that determines a sweep's rows, the path
+/// included (the batched and scalar paths agree to ulps, not bits).
+pub fn fingerprint(scene: &Scene, spec: &SweepSpec, steps: usize, h: f64, batched: bool) -> u64 {
     let text = format!(
-        "{:?}|{:?}|{:?}|{}|{:?}|{:?}|{:?}",
-        scene.system, scene.method, scene.solver, scene.reconstruct, h, steps, spec
+        "{:?}|{:?}|{:?}|{}|{:?}|{:?}|{:?}{}",
+        scene.system,
+        scene.method,
+        scene.solver,
+        scene.reconstruct,
+        h,
+        steps,
+        spec,
+        if batched { "|batched" } else { "" }
     );
     text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
         (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
@@ -227,6 +298,7 @@ pub fn run(
     scene: &Scene,
     shard: Shard,
     threads: Option<usize>,
+    scalar: bool,
 ) -> Result<(SweepOutput, SweepSpec, Duration), SimError> {
     let (spec, steps, h) = plan(scene)?;
     let pool = match threads {
@@ -248,6 +320,7 @@ pub fn run(
         pool: pool.as_ref(),
         method: &scene.method,
         solver: &scene.solver,
+        scalar,
         what: format!("{} with {}", scene.system.kind(), scene.method),
     };
     let start = Instant::now();

@@ -35,6 +35,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: None,
+    batch: None,
 };
 
 fn family(_: &Options) -> &'static Family {

@@ -32,6 +32,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: None,
+    batch: None,
 };
 
 fn family(_: &Options) -> &'static Family {

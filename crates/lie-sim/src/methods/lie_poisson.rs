@@ -42,6 +42,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: None,
+    batch: None,
 };
 
 fn family(m: &Options) -> &'static Family {

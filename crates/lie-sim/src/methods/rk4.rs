@@ -2,7 +2,7 @@
 
 use super::families::{self, Family};
 use super::options::Options;
-use super::row::{Row, Stepping, TauRule, Takes, Trade};
+use super::row::{Batched, Row, Stepping, TauRule, Takes, Trade};
 use super::wrap::BuildError;
 use crate::model::{Alg, Model, So3Visitor};
 use crate::sim::Boxed;
@@ -32,6 +32,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: None,
+    batch: Some(Batched::Rk4),
 };
 
 fn family(_: &Options) -> &'static Family {

@@ -32,6 +32,7 @@ pub const ROW: Row = Row {
     family,
     second: true,
     marker: None,
+    batch: None,
 };
 
 fn family(_: &Options) -> &'static Family {

@@ -25,6 +25,16 @@ pub enum Stepping {
     Fixed,
 }
 
+/// The batched method (SIMD, lanes = bodies; the `batch` crate) that `lie-sim sweep` steps a
+/// method's ensemble with, where the model is a body the batch carries (`crate::batched`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Batched {
+    /// `batch::Strang` (the Strang splitting, under a composition too).
+    Strang,
+    /// `batch::QuaternionRk4` (RK4 on (q, Π), bit for bit the scalar step).
+    Rk4,
+}
+
 /// The options a method takes in `[integrator]`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Takes {
@@ -78,6 +88,8 @@ pub struct Row {
     pub second: bool,
     /// Its marker when neither θ nor a scheme sets one (the exact flow's ◆).
     pub marker: Option<Marker>,
+    /// The batched method its sweeps run with, where there is one.
+    pub batch: Option<Batched>,
 }
 
 /// The θ values `trade` sweeps for a method that takes θ.

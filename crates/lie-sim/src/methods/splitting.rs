@@ -3,7 +3,7 @@
 
 use super::families::{self, Family};
 use super::options::Options;
-use super::row::{Row, Stepping, TauRule, Takes, Trade};
+use super::row::{Batched, Row, Stepping, TauRule, Takes, Trade};
 use super::wrap::{wrap, BuildError};
 use crate::model::{Alg, Missing, Model, SplitVisitor};
 use crate::sim::Boxed;
@@ -35,6 +35,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: None,
+    batch: Some(Batched::Strang),
 };
 
 fn family(_: &Options) -> &'static Family {

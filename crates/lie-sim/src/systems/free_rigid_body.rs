@@ -11,6 +11,7 @@ use crate::forces::Forces;
 use crate::model::{
     Alg, FreeBodyVisitor, Has, Job, KineticVisitor, Missing, Model, So3Visitor, SplitVisitor,
 };
+use batch::BodyModel;
 use integrators::forces::{BodyTorque, Forced, LinearDamping};
 use integrators::splitting::SplitSystem;
 use integrators::IntegratorError;
@@ -124,6 +125,8 @@ pub struct So3Body<S> {
     system: S,
     body: RigidBody,
     free: bool,
+    /// The batch's copy of the system, where a batch carries it (unforced, 𝕀 diagonal).
+    batch: Has<BodyModel>,
 }
 
 impl So3Body<RigidBody> {
@@ -132,6 +135,7 @@ impl So3Body<RigidBody> {
         Self {
             kind,
             system: body.clone(),
+            batch: BodyModel::free(&body).map_err(|e| Missing::because(e.to_string())),
             body,
             free: true,
         }
@@ -146,7 +150,13 @@ impl<S> So3Body<S> {
             system,
             body,
             free: false,
+            batch: Err(Missing::default()),
         }
+    }
+    /// With the batch's copy of the system (`batch::BodyModel`), or why a batch cannot carry it.
+    pub fn batched(mut self, batch: Result<BodyModel, batch::BatchError>) -> Self {
+        self.batch = batch.map_err(|e| Missing::because(e.to_string()));
+        self
     }
 }
 
@@ -172,6 +182,10 @@ impl<S: SplitSystem<So3> + Clone + Sync + 'static> Model for So3Body<S> {
     }
     fn so3<V: So3Visitor>(&self, v: V, mu0: Vector3<f64>, g0: Option<So3>) -> Has<V::Out<So3>> {
         Ok(v.visit(&self.system, mu0, g0))
+    }
+    fn batch_body(&self, g0: Option<&So3>) -> Has<(BodyModel, So3)> {
+        let model = self.batch.clone()?;
+        Ok((model, g0.copied().unwrap_or_else(So3::identity)))
     }
     fn free_body<V: FreeBodyVisitor>(
         &self,

@@ -106,7 +106,11 @@ impl SceneSystem for HeavyTop {
         let body = top.body().clone();
         let g0 = so3(Self::KIND, &self.attitude, reconstruct)?;
         match &self.forces {
-            None => job.run(&So3Body::new(Self::KIND, top, body), self.momentum, g0),
+            None => {
+                let batch = batch::BodyModel::heavy_top(&top);
+                let model = So3Body::new(Self::KIND, top, body).batched(batch);
+                job.run(&model, self.momentum, g0)
+            }
             Some(f) => {
                 let forced = Forced::new(top, so3_forces(f).map_err(built)?);
                 job.run(&So3Body::new(Self::KIND, forced, body), self.momentum, g0)

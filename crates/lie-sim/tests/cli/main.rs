@@ -3,6 +3,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod batched_sweep;
 mod choose;
 mod cli;
 mod dense_output;

@@ -1,0 +1,134 @@
+//! The sweep's batched path: where the scene's method has a batched version (its registry row's
+//! `batch`: the Strang splitting, under a composition too, and quaternion RK4) and the model is a
+//! body a batch carries (a rigid body in principal axes, free or in a uniform field, unforced:
+//! `Model::batch_body`), `lie-sim sweep` steps the members N at a time with the `batch` crate —
+//! eight bodies per vector operation on AVX-512, four on AVX2 — instead of one scalar step per
+//! member per core.
+//!
+//! **Same rows, to the ulp.** The batched Strang step is within `4 (1 + θ)` ulps of the scalar
+//! step (θ its largest rotation angle), batched RK4 is the scalar step bit for bit; each member's
+//! trajectory has the same bits whatever its lane, the chunk, the instruction set, the thread
+//! count and the shard (the `batch` crate's determinism), so the sweep's rows still do not depend
+//! on how it is run. The path is part of the sweep's fingerprint: shards of the batched and the
+//! scalar path are not merged. `lie-sim sweep --scalar` takes the scalar path.
+//!
+//! **Bounded memory.** The members go through in chunks of [`CHUNK`] bodies (their state, a few
+//! hundred bytes each), so the batch's memory does not grow with N.
+
+use crate::methods::row::Batched;
+use crate::methods::MethodSpec;
+use crate::model::{Missing, Model};
+use batch::{Batch, BatchError, BodyModel, Kernel, Level, QuaternionRk4, Strang};
+use integrators::ensemble::{Execution, Summary};
+use lie_groups::{So3, Vector};
+use nalgebra::Vector3;
+
+/// Members per batch: enough vectors of lanes to keep every thread busy, few enough that the
+/// state of a chunk stays in the last-level cache's neighbourhood and memory stays bounded.
+pub const CHUNK: usize = 1 << 16;
+
+/// A sweep's batched run: the kernel, the body, g₀ and the instruction set.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    kind: Batched,
+    body: BodyModel,
+    g0: So3,
+    composition: Option<integrators::CompositionScheme>,
+    level: Level,
+}
+
+impl Plan {
+    /// The batched run of `spec` on `model` from g₀, or why there is none (`Missing` with the
+    /// reason, or without one where the method has no batched version).
+    pub fn new<M: Model>(spec: &MethodSpec, model: &M, g0: Option<&M::G>) -> Result<Self, Missing> {
+        let Some(kind) = spec.method.row().batch else {
+            return Err(Missing::because(format!(
+                "{} has no batched version",
+                spec.method
+            )));
+        };
+        if spec.processing.is_some() || spec.modified.is_some() {
+            return Err(Missing::because(
+                "the batched splitting takes compositions, not processing or a modified \
+                 Hamiltonian",
+            ));
+        }
+        let (body, g0) = model.batch_body(g0).map_err(|m| {
+            Missing::because(m.0.unwrap_or_else(|| {
+                format!(
+                    "a batch carries rigid bodies in principal axes, free or in a uniform field, \
+                     without forces; this {} is not one",
+                    model.kind()
+                )
+            }))
+        })?;
+        Ok(Self {
+            kind,
+            body,
+            g0,
+            composition: spec.composition.clone(),
+            level: Level::detect(),
+        })
+    }
+
+    /// The instruction set the batch runs on.
+    pub fn level(&self) -> Level {
+        self.level
+    }
+
+    /// One summary per member (momenta `members`, sweep indices `indices`) after `steps` steps of
+    /// h, energy and Casimir monitored every `monitor_every` steps, as
+    /// `integrators::ensemble::Ensemble` reports them for the scalar method.
+    pub fn run<A: Vector>(
+        &self,
+        members: &[A],
+        indices: &[usize],
+        h: f64,
+        steps: usize,
+        monitor_every: usize,
+        execution: Execution,
+    ) -> Result<Vec<Summary<Vector3<f64>>>, BatchError> {
+        match self.kind {
+            Batched::Strang => self.chunks(
+                Strang::new(self.body.clone()),
+                members,
+                indices,
+                (h, steps, monitor_every),
+                execution,
+            ),
+            Batched::Rk4 => self.chunks(
+                QuaternionRk4::new(self.body.clone()),
+                members,
+                indices,
+                (h, steps, monitor_every),
+                execution,
+            ),
+        }
+    }
+
+    fn chunks<K: Kernel, A: Vector>(
+        &self,
+        kernel: K,
+        members: &[A],
+        indices: &[usize],
+        (h, steps, monitor_every): (f64, usize, usize),
+        execution: Execution,
+    ) -> Result<Vec<Summary<Vector3<f64>>>, BatchError> {
+        let mut out = Vec::with_capacity(members.len());
+        for (chunk, index) in members.chunks(CHUNK).zip(indices.chunks(CHUNK)) {
+            let momenta: Vec<Vector3<f64>> = chunk
+                .iter()
+                .map(|mu| Vector3::from_fn(|i, _| mu.get(i)))
+                .collect();
+            let mut b = Batch::new(kernel.clone(), &momenta, &[self.g0], self.level)?
+                .monitor_every(monitor_every as u64)
+                .parallel(execution);
+            if let Some(c) = &self.composition {
+                b = b.with_composition(c.clone())?;
+            }
+            b.run(h, steps as u64)?;
+            out.extend(b.summaries(|i| index[i]));
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,183 @@
+//! `lie-sim sweep` on the batched path (`crate::batched`): the rows do not depend on the thread
+//! count or the shard, agree with the scalar path to round-off (bit for bit for RK4), and a sweep
+//! that cannot be batched says why and runs scalar.
+
+use crate::common::{lie_sim, scenes_dir, stderr, stdout, temp_dir};
+use std::path::Path;
+
+/// `lie-sim sweep SCENE --out OUT --count N --duration T EXTRA…` in `dir`; panics on failure.
+fn sweep(
+    dir: &Path,
+    scene: &str,
+    out: &str,
+    count: usize,
+    duration: &str,
+    extra: &[&str],
+) -> String {
+    let count = count.to_string();
+    let mut args = vec![
+        "sweep",
+        scene,
+        "--out",
+        out,
+        "--count",
+        &count,
+        "--duration",
+        duration,
+    ];
+    args.extend_from_slice(extra);
+    let o = lie_sim(&args, dir);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    stdout(&o)
+}
+
+/// The CSV's rows (after the naming line and the header), split into fields.
+fn rows(dir: &Path, file: &str) -> Vec<Vec<String>> {
+    std::fs::read_to_string(dir.join(file))
+        .unwrap()
+        .lines()
+        .skip(2)
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect()
+}
+
+fn rotors() -> String {
+    scenes_dir()
+        .join("sweep-rotors.toml")
+        .to_str()
+        .unwrap()
+        .to_string()
+}
+
+/// 37 rotors (four full vectors of eight and a remainder): on one thread and on two, and as
+/// three shards merged, byte for byte the same file; the summary names the batched path.
+#[test]
+fn batched_rows_do_not_depend_on_threads_or_shards() {
+    let dir = temp_dir("batched-sweep");
+    let scene = rotors();
+    let out = sweep(&dir, &scene, "one.csv", 37, "0.5", &["--threads", "1"]);
+    assert!(out.contains("path         batched ("), "{out}");
+    sweep(&dir, &scene, "two.csv", 37, "0.5", &["--threads", "2"]);
+    for i in 0..3 {
+        sweep(
+            &dir,
+            &scene,
+            &format!("p{i}.csv"),
+            37,
+            "0.5",
+            &["--shard", &format!("{i}/3")],
+        );
+    }
+    let o = lie_sim(
+        &["merge", "p1.csv", "p2.csv", "p0.csv", "--out", "merged.csv"],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let one = std::fs::read(dir.join("one.csv")).unwrap();
+    assert_eq!(std::fs::read(dir.join("two.csv")).unwrap(), one);
+    assert_eq!(std::fs::read(dir.join("merged.csv")).unwrap(), one);
+    assert_eq!(rows(&dir, "one.csv").len(), 37);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The batched Strang rows against the scalar path's (`--scalar`), 40 steps: the same statuses,
+/// steps and times, the momenta within 1e-13 |Π| and the initial energies within an ulp or two,
+/// the maxima of the energy and Casimir errors alike (the energy error to a few ulps of E₀, the
+/// rounding of the energies it is the difference of; the Casimir error, round-off itself, below
+/// 1e-14); the files' fingerprints differ, so `merge`
+/// refuses to mix the paths.
+#[test]
+fn batched_and_scalar_strang_rows_agree_to_round_off() {
+    let dir = temp_dir("batched-vs-scalar");
+    let scene = rotors();
+    sweep(&dir, &scene, "b.csv", 29, "2.0", &["--shard", "0/2"]);
+    let out = sweep(
+        &dir,
+        &scene,
+        "s.csv",
+        29,
+        "2.0",
+        &["--shard", "1/2", "--scalar"],
+    );
+    assert!(out.contains("path         scalar (--scalar)"), "{out}");
+    let o = lie_sim(&["merge", "b.csv", "s.csv", "--out", "m.csv"], &dir);
+    assert!(!o.status.success(), "batched and scalar shards were merged");
+    assert!(stderr(&o).contains("different sweeps"), "{}", stderr(&o));
+
+    sweep(&dir, &scene, "batched.csv", 29, "2.0", &[]);
+    sweep(&dir, &scene, "scalar.csv", 29, "2.0", &["--scalar"]);
+    let (b, s) = (rows(&dir, "batched.csv"), rows(&dir, "scalar.csv"));
+    assert_eq!(b.len(), 29);
+    let num = |x: &str| x.parse::<f64>().unwrap();
+    for (rb, rs) in b.iter().zip(&s) {
+        assert_eq!(rb[..4], rs[..4], "index, status, steps, time");
+        let norm = (4..7).map(|c| num(&rs[c]).powi(2)).sum::<f64>().sqrt();
+        for c in 4..7 {
+            assert!(
+                (num(&rb[c]) - num(&rs[c])).abs() <= 1e-13 * norm,
+                "Π: {rb:?} {rs:?}"
+            );
+        }
+        let (e_b, e_s) = (num(&rb[7]), num(&rs[7]));
+        assert!(
+            (e_b - e_s).abs() <= 4.0 * f64::EPSILON * e_s,
+            "E₀: {rb:?} {rs:?}"
+        );
+        let (de_b, de_s) = (num(&rb[8]), num(&rs[8]));
+        // Each maximum is a difference of two energies, so it carries their rounding.
+        assert!(
+            (de_b - de_s).abs() <= 16.0 * f64::EPSILON * e_s,
+            "max |E − E₀|: {rb:?} {rs:?}"
+        );
+        assert!(
+            num(&rb[9]) < 1e-14 && num(&rs[9]) < 1e-14,
+            "Casimir: {rb:?} {rs:?}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A heavy top's sweep with RK4: batched RK4 is the scalar step bit for bit, so the rows of the
+/// batched and the scalar path are the same bytes.
+#[test]
+fn batched_rk4_rows_are_the_scalar_rows_bit_for_bit() {
+    let dir = temp_dir("batched-rk4");
+    let top = std::fs::read_to_string(scenes_dir().join("heavy-top.toml")).unwrap();
+    let scene = top
+        .replace("method = \"lie-poisson\"", "method = \"rk4\"")
+        .replace("tau = \"cayley\"\n", "")
+        .replace("theta = 0.5\n", "")
+        + "\n[sweep]\ncount = 19\nseed = 3\nkind = \"momenta-on-sphere\"\nmonitor_every = 7\n";
+    std::fs::write(dir.join("top.toml"), scene).unwrap();
+    let out = sweep(&dir, "top.toml", "b.csv", 19, "0.3", &[]);
+    assert!(out.contains("path         batched ("), "{out}");
+    sweep(&dir, "top.toml", "s.csv", 19, "0.3", &["--scalar"]);
+    assert_eq!(rows(&dir, "b.csv"), rows(&dir, "s.csv"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Sweeps the batch does not cover run scalar and say why: a method without a batched version,
+/// and a rotor with an external torque.
+#[test]
+fn a_sweep_that_cannot_be_batched_says_why_and_runs_scalar() {
+    let dir = temp_dir("not-batched");
+    let lp = scenes_dir().join("sweep.toml");
+    let out = sweep(&dir, lp.to_str().unwrap(), "lp.csv", 5, "0.2", &[]);
+    assert!(
+        out.contains("path         scalar (lie-poisson has no batched version)"),
+        "{out}"
+    );
+    let rotors = std::fs::read_to_string(rotors()).unwrap();
+    let forced = rotors.replace(
+        "[integrator]",
+        "[forces]\ntorque = [0.0, 0.0, 0.1]\n\n[integrator]",
+    );
+    std::fs::write(dir.join("forced.toml"), forced).unwrap();
+    let out = sweep(&dir, "forced.toml", "f.csv", 5, "0.2", &[]);
+    assert!(
+        out.contains("path         scalar (a batch carries rigid bodies"),
+        "{out}"
+    );
+    assert_eq!(rows(&dir, "f.csv").len(), 5);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
