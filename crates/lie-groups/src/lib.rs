@@ -1,9 +1,4 @@
-//! # lie-groups
-//!
-//! Lie groups for structure-preserving integration: SO(2), SO(3), SE(2), SE(3) on nalgebra stack
-//! types, SO(n) and GL(n) of any size on faer, composite configuration spaces (ℝⁿ, direct
-//! products, powers), and the τ maps (exp, Cayley) of §3.1 of the paper *Numerical Integrators for
-//! Mechanical Systems on Lie Groups*.
+#![doc = include_str!("../README.md")]
 //!
 //! ## Composite configuration spaces
 //! - [`Rn<N>`](Rn): ℝᴺ under vector addition; `exp ξ = ξ`, `Ad = I`, `ad = 0`, matrix
@@ -16,7 +11,8 @@
 //! They implement [`LieGroup`] (and [`CayleyGroup`]), so bundles, discretization maps and
 //! integrators run on them unchanged: a rigid body and a particle form one system on SO(3) × ℝ³,
 //! N bodies one system on SO(3)ᴺ. The algebra vectors are on the stack for stack factors;
-//! operators and matrices of products and powers are faer `Mat`s (see [`product`] for why).
+//! operators and matrices of products and powers are nalgebra `DMatrix`es (see [`product`] for
+//! why).
 //!
 //! ```
 //! use lie_groups::{LieGroup, Power, PowerAlgebra, Product, ProductAlgebra, Rn, So3};
@@ -79,6 +75,8 @@ mod group;
 /// dependency of their own at a matching version.
 pub use nalgebra;
 
+pub mod linalg;
+#[cfg(feature = "faer")]
 pub mod matrix;
 pub mod matrix_path;
 mod operator;
@@ -100,6 +98,7 @@ pub use error::{DomainReason, GroupMap, LieError, StructureCheck};
 pub use group::{
     dexp_dual_derivative_series, nan_operator, Action, LieGroup, DEXP_DERIVATIVE_MAX_TERMS,
 };
+#[cfg(feature = "faer")]
 pub use matrix::{GlN, SoN};
 pub use operator::{DenseMatrix, Operator};
 pub use power::{Power, PowerAlgebra};
@@ -112,8 +111,3 @@ pub use so3::So3;
 pub use tau::{Cayley, CayleyGroup, ExpMap, Tau};
 pub use trig::sin_cos;
 pub use vector::Vector;
-
-/// The README's example (the crate's page on crates.io), compiled and run as a doctest.
-#[cfg(doctest)]
-#[doc = include_str!("../README.md")]
-pub struct ReadmeDoctests;

@@ -1,23 +1,26 @@
 //! The generic matrix-group path: exp, log, cay, cay⁻¹ and the left-trivialized tangents evaluated
-//! on the matrix representation with dense linear algebra (faer), for any [`LieGroup`].
+//! on the matrix representation with dense linear algebra (nalgebra's [`DMatrix`],
+//! [`crate::linalg`]), for any [`LieGroup`].
 //!
 //! SO(n) and GL(n) use these as their implementation; for SO(3), SE(3) and SE(2) they are the
 //! independent reference the closed forms are tested against. None of these are hot paths.
 
-use crate::matrix::dense::{expm, try_inverse, try_solve};
+use crate::linalg::{expm, logm, try_inverse, try_solve};
 use crate::{DenseMatrix, DomainReason, LieError, LieGroup, Operator, Vector};
-use faer::{Mat, MatRef};
+use nalgebra::{DMatrix, DMatrixView};
 
-fn hat_mat<G: LieGroup>(xi: &G::Algebra) -> Mat<f64> {
-    G::hat(xi).to_mat()
+fn hat_mat<G: LieGroup>(xi: &G::Algebra) -> DMatrix<f64> {
+    G::hat(xi).to_dmatrix()
 }
 
-fn vee_mat<G: LieGroup>(m: MatRef<'_, f64>) -> G::Algebra {
-    G::vee(&G::Matrix::from_mat(m).expect("matrix of the group's size"))
+fn vee_mat<G: LieGroup>(m: &DMatrix<f64>) -> G::Algebra {
+    G::vee(&G::Matrix::from_dmatrix(m.as_view()).expect("matrix of the group's size"))
 }
 
-fn from_mat<G: LieGroup>(m: MatRef<'_, f64>) -> G {
-    G::from_matrix_unchecked(&G::Matrix::from_mat(m).expect("matrix of the group's size"))
+fn from_mat<G: LieGroup>(m: &DMatrix<f64>) -> G {
+    G::from_matrix_unchecked(
+        &G::Matrix::from_dmatrix(m.as_view()).expect("matrix of the group's size"),
+    )
 }
 
 /// Builds the n×n operator whose j-th column is `f(eⱼ)`.
@@ -30,7 +33,7 @@ pub fn operator_from_columns<G: LieGroup>(
 
 /// Builds the n×n operator (n = dim 𝔤) whose j-th column is `col(j)`, through a stack buffer for
 /// n ≤ 8 (no heap allocation for the fixed-size groups: this sits in integrators' Newton
-/// iterations) and a faer matrix above.
+/// iterations) and a heap matrix above.
 pub fn operator_from_column_fn<G: LieGroup>(col: impl FnMut(usize) -> G::Algebra) -> G::Operator {
     /// Fills an `M`-entry buffer column-major; `M` ≥ n² (zeroing a larger buffer than needed costs as
     /// much as filling it, hence two sizes).
@@ -45,8 +48,8 @@ pub fn operator_from_column_fn<G: LieGroup>(col: impl FnMut(usize) -> G::Algebra
                 buf[j * n + i] = c.get(i);
             }
         }
-        let view = MatRef::from_column_major_slice(&buf[..n * n], n, n);
-        G::Operator::from_mat(view).expect("an n×n operator of the group")
+        let view = DMatrixView::from_slice(&buf[..n * n], n, n);
+        G::Operator::from_dmatrix(view).expect("an n×n operator of the group")
     }
     let n = G::dim();
     match n {
@@ -54,65 +57,57 @@ pub fn operator_from_column_fn<G: LieGroup>(col: impl FnMut(usize) -> G::Algebra
         4..=8 => buffered::<G, 64>(n, col),
         _ => {
             let cols: Vec<G::Algebra> = (0..n).map(col).collect();
-            let m = Mat::from_fn(n, n, |i, j| cols[j].get(i));
-            G::Operator::from_mat(m.as_ref()).expect("an n×n operator of the group")
+            let m = DMatrix::from_fn(n, n, |i, j| cols[j].get(i));
+            G::Operator::from_dmatrix(m.as_view()).expect("an n×n operator of the group")
         }
     }
 }
 
-/// exp(ξ) = e^{ξ̂} by Padé scaling and squaring.
+/// exp(ξ) = e^{ξ̂} by Padé scaling and squaring ([`crate::linalg::expm`]).
 pub fn exp<G: LieGroup>(xi: &G::Algebra) -> G {
-    from_mat::<G>(expm(hat_mat::<G>(xi).as_ref()).as_ref())
+    from_mat::<G>(&expm(hat_mat::<G>(xi).as_view()))
 }
 
 /// log(g) = (log_m g)ˇ, the principal matrix logarithm by inverse scaling and squaring.
 pub fn log<G: LieGroup>(g: &G) -> Result<G::Algebra, LieError> {
-    let l = crate::matrix::logm::logm(g.matrix().to_mat().as_ref())?;
-    Ok(vee_mat::<G>(l.as_ref()))
+    let l = logm(g.matrix().to_dmatrix().as_view())?;
+    Ok(vee_mat::<G>(&l))
 }
 
-/// cay(ξ) = (I − ξ̂/2)⁻¹ (I + ξ̂/2).
+/// cay(ξ) = (I − ξ̂/2)⁻¹ (I + ξ̂/2); a matrix of NaN where I − ξ̂/2 is singular.
 pub fn cay<G: LieGroup>(xi: &G::Algebra) -> G {
     let a = hat_mat::<G>(xi);
     let m = a.nrows();
-    let id = Mat::<f64>::identity(m, m);
-    let minus = Mat::from_fn(m, m, |i, j| id[(i, j)] - 0.5 * a[(i, j)]);
-    let plus = Mat::from_fn(m, m, |i, j| id[(i, j)] + 0.5 * a[(i, j)]);
-    match try_solve(minus.as_ref(), plus.as_ref()) {
-        Some(x) => from_mat::<G>(x.as_ref()),
-        None => from_mat::<G>(Mat::from_fn(m, m, |_, _| f64::NAN).as_ref()),
+    let id = DMatrix::<f64>::identity(m, m);
+    let minus = &id - &a * 0.5;
+    let plus = &id + &a * 0.5;
+    match try_solve(minus.as_view(), plus.as_view()) {
+        Some(x) => from_mat::<G>(&x),
+        None => from_mat::<G>(&DMatrix::from_element(m, m, f64::NAN)),
     }
 }
 
 /// cay⁻¹(g) = (2 (g − I)(g + I)⁻¹)ˇ; an error where g + I is singular (a rotation by π).
 pub fn cay_inv<G: LieGroup>(g: &G) -> Result<G::Algebra, LieError> {
-    let gm = g.matrix().to_mat();
+    let gm = g.matrix().to_dmatrix();
     let m = gm.nrows();
-    let id = Mat::<f64>::identity(m, m);
-    let plus = &gm + &id;
-    let minus = &gm - &id;
-    let inv = try_inverse(plus.as_ref())
+    let id = DMatrix::<f64>::identity(m, m);
+    let inv = try_inverse((&gm + &id).as_view())
         .ok_or(LieError::OutOfDomain(DomainReason::EigenvalueMinusOne))?;
-    let a = &minus * &inv;
-    Ok(vee_mat::<G>(
-        Mat::from_fn(m, m, |i, j| 2.0 * a[(i, j)]).as_ref(),
-    ))
+    Ok(vee_mat::<G>(&((&gm - &id) * inv * 2.0)))
 }
 
 /// `d^L cay_ξ (η) = ((I + ξ̂/2)⁻¹ η̂ (I − ξ̂/2)⁻¹)ˇ`.
 pub fn dcay_left<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
     let a = hat_mat::<G>(xi);
     let m = a.nrows();
-    let id = Mat::<f64>::identity(m, m);
-    let plus = Mat::from_fn(m, m, |i, j| id[(i, j)] + 0.5 * a[(i, j)]);
-    let minus = Mat::from_fn(m, m, |i, j| id[(i, j)] - 0.5 * a[(i, j)]);
-    let (Some(pi), Some(mi)) = (try_inverse(plus.as_ref()), try_inverse(minus.as_ref())) else {
+    let id = DMatrix::<f64>::identity(m, m);
+    let plus = &id + &a * 0.5;
+    let minus = &id - &a * 0.5;
+    let (Some(pi), Some(mi)) = (try_inverse(plus.as_view()), try_inverse(minus.as_view())) else {
         return crate::group::nan_operator::<G>();
     };
-    operator_from_columns::<G>(|e| {
-        let b = hat_mat::<G>(e);
-        vee_mat::<G>((&(&pi * &b) * &mi).as_ref())
-    })
+    operator_from_columns::<G>(|e| vee_mat::<G>(&(&pi * hat_mat::<G>(e) * &mi)))
 }
 
 /// `(d^L cay_ξ)⁻¹ (η) = (η̂ + [ξ̂, η̂]/2 − ξ̂ η̂ ξ̂/4)ˇ`.
@@ -123,13 +118,7 @@ pub fn dcay_left_inv<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
         let ab = &a * &b;
         let ba = &b * &a;
         let aba = &ab * &a;
-        let m = a.nrows();
-        vee_mat::<G>(
-            Mat::from_fn(m, m, |i, j| {
-                b[(i, j)] + 0.5 * (ab[(i, j)] - ba[(i, j)]) - 0.25 * aba[(i, j)]
-            })
-            .as_ref(),
-        )
+        vee_mat::<G>(&(&b + (ab - ba) * 0.5 - aba * 0.25))
     })
 }
 
@@ -138,19 +127,17 @@ pub fn dcay_left_inv<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
 pub fn dexp_left<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
     let a = hat_mat::<G>(xi);
     let m = a.nrows();
-    let neg: Mat<f64> = Mat::from_fn(m, m, |i, j| -a[(i, j)]);
-    let e_neg = expm(neg.as_ref());
+    let e_neg = expm((-&a).as_view());
     operator_from_columns::<G>(|e| {
         let b = hat_mat::<G>(e);
-        let block = Mat::from_fn(2 * m, 2 * m, |i, j| match (i < m, j < m) {
+        let block = DMatrix::from_fn(2 * m, 2 * m, |i, j| match (i < m, j < m) {
             (true, true) => a[(i, j)],
             (true, false) => b[(i, j - m)],
             (false, false) => a[(i - m, j - m)],
             (false, true) => 0.0,
         });
-        let big = expm(block.as_ref());
-        let d = Mat::from_fn(m, m, |i, j| big[(i, j + m)]);
-        vee_mat::<G>((&e_neg * &d).as_ref())
+        let big = expm(block.as_view());
+        vee_mat::<G>(&(&e_neg * big.view((0, m), (m, m))))
     })
 }
 
@@ -163,9 +150,9 @@ pub fn dexp_left_inv<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
 
 /// Ad_g as the operator ξ ↦ (g ξ̂ g⁻¹)ˇ.
 pub fn adjoint<G: LieGroup>(g: &G) -> G::Operator {
-    let gm = g.matrix().to_mat();
-    let gi = g.inverse().matrix().to_mat();
-    operator_from_columns::<G>(|e| vee_mat::<G>((&(&gm * &hat_mat::<G>(e)) * &gi).as_ref()))
+    let gm = g.matrix().to_dmatrix();
+    let gi = g.inverse().matrix().to_dmatrix();
+    operator_from_columns::<G>(|e| vee_mat::<G>(&(&gm * hat_mat::<G>(e) * &gi)))
 }
 
 /// ad_ξ as the operator η ↦ (ξ̂ η̂ − η̂ ξ̂)ˇ.
@@ -173,6 +160,6 @@ pub fn ad<G: LieGroup>(xi: &G::Algebra) -> G::Operator {
     let a = hat_mat::<G>(xi);
     operator_from_columns::<G>(|e| {
         let b = hat_mat::<G>(e);
-        vee_mat::<G>((&(&a * &b) - &(&b * &a)).as_ref())
+        vee_mat::<G>(&(&a * &b - &b * &a))
     })
 }

@@ -11,12 +11,13 @@
 //! `Power<G, 2>` and `Product<G, G>` are the same group with the same coordinates. Storage and
 //! cost as for [`crate::Product`]: the algebra is an array of the factor's vectors (on the stack
 //! for stack factors, so a step's vector operations allocate nothing), operators and the matrix
-//! are faer [`Mat`]s of size N·n (heap). A run-time number of copies (slice- or `Vec`-backed) is
-//! not provided: [`LieGroup::dim`] takes no `self`, so the number of copies must be in the type.
+//! are nalgebra [`DMatrix`]es of size N·n (heap). A run-time number of copies (slice- or
+//! `Vec`-backed) is not provided: [`LieGroup::dim`] takes no `self`, so the number of copies must
+//! be in the type.
 
-use crate::product::{block_diag, diag_block, matrix_size};
+use crate::product::{diag_block, matrix_size};
 use crate::{CayleyGroup, DenseMatrix, LieError, LieGroup, StructureCheck, Vector};
-use faer::Mat;
+use nalgebra::DMatrix;
 
 /// Coordinates `(ξ₀, …, ξ_{N−1})` of 𝔤ᴺ (or its dual), read as one vector of ℝ^{N·dim 𝔤} by
 /// concatenation: component `k·dim 𝔤 + i` is `(ξ_k)_i`. Parametrized by the group so that
@@ -155,11 +156,16 @@ impl<G: LieGroup, const N: usize> Power<G, N> {
     }
 }
 
-/// `diag(A₀, …, A_{N−1})` of N operators (or matrices) given as faer matrices.
-fn diag_of(blocks: impl Iterator<Item = Mat<f64>>) -> Mat<f64> {
-    let mut out = Mat::zeros(0, 0);
-    for b in blocks {
-        out = block_diag(out.as_ref(), b.as_ref());
+/// `diag(A₀, …, A_{N−1})` of N square operators (or matrices), each given as a nalgebra matrix.
+fn diag_of(blocks: impl Iterator<Item = DMatrix<f64>>) -> DMatrix<f64> {
+    let blocks: Vec<DMatrix<f64>> = blocks.collect();
+    let size = blocks.iter().map(|b| b.nrows()).sum();
+    let mut out = DMatrix::zeros(size, size);
+    let mut start = 0;
+    for b in &blocks {
+        let k = b.nrows();
+        out.view_mut((start, start), (k, k)).copy_from(b);
+        start += k;
     }
     out
 }
@@ -170,8 +176,8 @@ impl<G: LieGroup, const N: usize> LieGroup for Power<G, N> {
     /// G's radius: `‖(ξ_k)‖ ≤ r` bounds every `‖ξ_k‖` by r.
     const EXP_INVERTIBLE_RADIUS: f64 = G::EXP_INVERTIBLE_RADIUS;
     type Algebra = PowerAlgebra<G, N>;
-    type Operator = Mat<f64>;
-    type Matrix = Mat<f64>;
+    type Operator = DMatrix<f64>;
+    type Matrix = DMatrix<f64>;
 
     /// `"G^N"`.
     fn name() -> String {
@@ -209,22 +215,22 @@ impl<G: LieGroup, const N: usize> LieGroup for Power<G, N> {
         Ok(out)
     }
     /// `diag(ξ̂₀, …, ξ̂_{N−1})`.
-    fn hat(xi: &Alg<G, N>) -> Mat<f64> {
-        diag_of(xi.parts.iter().map(|x| G::hat(x).to_mat()))
+    fn hat(xi: &Alg<G, N>) -> DMatrix<f64> {
+        diag_of(xi.parts.iter().map(|x| G::hat(x).to_dmatrix()))
     }
     /// G's `vee` of each diagonal block (off-diagonal blocks ignored).
-    fn vee(m: &Mat<f64>) -> Alg<G, N> {
+    fn vee(m: &DMatrix<f64>) -> Alg<G, N> {
         let p = matrix_size::<G>();
-        PowerAlgebra::from_parts_fn(|k| G::vee(&diag_block::<G>(m.as_ref(), k * p, p)))
+        PowerAlgebra::from_parts_fn(|k| G::vee(&diag_block::<G>(m, k * p, p)))
     }
     /// `diag(g₀, …, g_{N−1})`.
-    fn matrix(&self) -> Mat<f64> {
-        diag_of(self.parts.iter().map(|g| g.matrix().to_mat()))
+    fn matrix(&self) -> DMatrix<f64> {
+        diag_of(self.parts.iter().map(|g| g.matrix().to_dmatrix()))
     }
     /// Refuses a shape other than (N p)×(N p) (p = G's matrix size), non-finite entries,
     /// off-diagonal blocks larger than [`Power::TOLERANCE`]` (1 + ‖M‖_max)`
     /// ([`StructureCheck::ProductOffDiagonal`]), and diagonal blocks G's `from_matrix` refuses.
-    fn from_matrix(m: &Mat<f64>) -> Result<Self, LieError> {
+    fn from_matrix(m: &DMatrix<f64>) -> Result<Self, LieError> {
         let p = matrix_size::<G>();
         let size = N * p;
         if m.nrows() != size || m.ncols() != size {
@@ -260,22 +266,22 @@ impl<G: LieGroup, const N: usize> LieGroup for Power<G, N> {
         }
         let mut out = Self::identity();
         for (k, o) in out.parts.iter_mut().enumerate() {
-            *o = G::from_matrix(&diag_block::<G>(m.as_ref(), k * p, p))?;
+            *o = G::from_matrix(&diag_block::<G>(m, k * p, p))?;
         }
         Ok(out)
     }
     /// G's `from_matrix_unchecked` of each diagonal block.
-    fn from_matrix_unchecked(m: &Mat<f64>) -> Self {
+    fn from_matrix_unchecked(m: &DMatrix<f64>) -> Self {
         let p = matrix_size::<G>();
-        Self::from_fn(|k| G::from_matrix_unchecked(&diag_block::<G>(m.as_ref(), k * p, p)))
+        Self::from_fn(|k| G::from_matrix_unchecked(&diag_block::<G>(m, k * p, p)))
     }
     /// `diag(Ad_{g₀}, …, Ad_{g_{N−1}})`.
-    fn adjoint(&self) -> Mat<f64> {
-        diag_of(self.parts.iter().map(|g| g.adjoint().to_mat()))
+    fn adjoint(&self) -> DMatrix<f64> {
+        diag_of(self.parts.iter().map(|g| g.adjoint().to_dmatrix()))
     }
     /// `diag(ad_{ξ₀}, …, ad_{ξ_{N−1}})`.
-    fn ad(xi: &Alg<G, N>) -> Mat<f64> {
-        diag_of(xi.parts.iter().map(|x| G::ad(x).to_mat()))
+    fn ad(xi: &Alg<G, N>) -> DMatrix<f64> {
+        diag_of(xi.parts.iter().map(|x| G::ad(x).to_dmatrix()))
     }
     #[inline]
     fn adjoint_apply(&self, xi: &Alg<G, N>) -> Alg<G, N> {
@@ -298,16 +304,16 @@ impl<G: LieGroup, const N: usize> LieGroup for Power<G, N> {
         xi.zip(mu, |a, b| G::ad_dual_apply(a, b))
     }
     /// `diag(M(μ₀), …, M(μ_{N−1}))`.
-    fn ad_dual_operator(mu: &Alg<G, N>) -> Mat<f64> {
-        diag_of(mu.parts.iter().map(|m| G::ad_dual_operator(m).to_mat()))
+    fn ad_dual_operator(mu: &Alg<G, N>) -> DMatrix<f64> {
+        diag_of(mu.parts.iter().map(|m| G::ad_dual_operator(m).to_dmatrix()))
     }
     /// `diag(d^L exp_{ξ_k})`.
-    fn dexp_left(xi: &Alg<G, N>) -> Mat<f64> {
-        diag_of(xi.parts.iter().map(|x| G::dexp_left(x).to_mat()))
+    fn dexp_left(xi: &Alg<G, N>) -> DMatrix<f64> {
+        diag_of(xi.parts.iter().map(|x| G::dexp_left(x).to_dmatrix()))
     }
     /// `diag((d^L exp_{ξ_k})⁻¹)`.
-    fn dexp_left_inv(xi: &Alg<G, N>) -> Mat<f64> {
-        diag_of(xi.parts.iter().map(|x| G::dexp_left_inv(x).to_mat()))
+    fn dexp_left_inv(xi: &Alg<G, N>) -> DMatrix<f64> {
+        diag_of(xi.parts.iter().map(|x| G::dexp_left_inv(x).to_dmatrix()))
     }
     #[inline]
     fn exp_coadjoint_increment(xi: &Alg<G, N>, mu: &Alg<G, N>) -> Alg<G, N> {
@@ -326,12 +332,12 @@ impl<G: LieGroup, const N: usize> LieGroup for Power<G, N> {
         xi.zip(mu, |a, b| G::dexp_left_dual_apply(a, b))
     }
     /// `diag(D exp(ξ_k; μ_k))`.
-    fn dexp_left_dual_derivative(xi: &Alg<G, N>, mu: &Alg<G, N>) -> Mat<f64> {
+    fn dexp_left_dual_derivative(xi: &Alg<G, N>, mu: &Alg<G, N>) -> DMatrix<f64> {
         diag_of(
             xi.parts
                 .iter()
                 .zip(mu.parts.iter())
-                .map(|(x, m)| G::dexp_left_dual_derivative(x, m).to_mat()),
+                .map(|(x, m)| G::dexp_left_dual_derivative(x, m).to_dmatrix()),
         )
     }
     #[inline]
@@ -369,12 +375,12 @@ impl<G: CayleyGroup, const N: usize> CayleyGroup for Power<G, N> {
         Ok(out)
     }
     /// `diag(d^L cay_{ξ_k})`.
-    fn dcay_left(xi: &Alg<G, N>) -> Mat<f64> {
-        diag_of(xi.parts.iter().map(|x| G::dcay_left(x).to_mat()))
+    fn dcay_left(xi: &Alg<G, N>) -> DMatrix<f64> {
+        diag_of(xi.parts.iter().map(|x| G::dcay_left(x).to_dmatrix()))
     }
     /// `diag((d^L cay_{ξ_k})⁻¹)`.
-    fn dcay_left_inv(xi: &Alg<G, N>) -> Mat<f64> {
-        diag_of(xi.parts.iter().map(|x| G::dcay_left_inv(x).to_mat()))
+    fn dcay_left_inv(xi: &Alg<G, N>) -> DMatrix<f64> {
+        diag_of(xi.parts.iter().map(|x| G::dcay_left_inv(x).to_dmatrix()))
     }
     #[inline]
     fn cay_coadjoint_increment(xi: &Alg<G, N>, mu: &Alg<G, N>) -> Alg<G, N> {
@@ -397,12 +403,12 @@ impl<G: CayleyGroup, const N: usize> CayleyGroup for Power<G, N> {
         xi.zip(mu, |a, b| G::dcay_left_dual_apply(a, b))
     }
     /// `diag(D cay(ξ_k; μ_k))`.
-    fn dcay_left_dual_derivative(xi: &Alg<G, N>, mu: &Alg<G, N>) -> Mat<f64> {
+    fn dcay_left_dual_derivative(xi: &Alg<G, N>, mu: &Alg<G, N>) -> DMatrix<f64> {
         diag_of(
             xi.parts
                 .iter()
                 .zip(mu.parts.iter())
-                .map(|(x, m)| G::dcay_left_dual_derivative(x, m).to_mat()),
+                .map(|(x, m)| G::dcay_left_dual_derivative(x, m).to_dmatrix()),
         )
     }
 }

@@ -19,15 +19,18 @@
 //! for stack factors (So3, Se3, Rn, …) it lives on the stack and every vector operation of a step
 //! (coadjoint increments, d^{L*}τ applied to a covector, brackets, `g τ(ξ)`) is computed factor by
 //! factor and allocates nothing. The operators (n×n with n = m + n_H) and the matrix
-//! representation are faer [`Mat`]s on the heap: a stack matrix of size m + n is not expressible
-//! for generic factors on stable Rust (`SMatrix<m + n, m + n>` needs `generic_const_exprs`), and
+//! representation are nalgebra [`DMatrix`]es on the heap: a stack matrix of size m + n is not
+//! expressible for generic factors on stable Rust (`SMatrix<m + n, m + n>` needs
+//! `generic_const_exprs`), and
 //! an operator cannot be stored as two diagonal blocks because a coupled system's Hessian
 //! ∂²h/∂μ² and the Newton matrices built from it fill the off-diagonal blocks too. So building an
 //! operator (Ad, ad, d^L exp, a Newton Jacobian) allocates; integrators do that when they form a
-//! Jacobian, not in the residual evaluations in between.
+//! Jacobian, not in the residual evaluations in between. Applying one to an algebra vector
+//! allocates nothing up to dimension 32 (see the `Operator` impl of `DMatrix`).
 
+use crate::linalg::block_diag;
 use crate::{CayleyGroup, DenseMatrix, LieError, LieGroup, StructureCheck, Vector};
-use faer::{Mat, MatRef};
+use nalgebra::{DMatrix, DMatrixView};
 
 /// Coordinates `(a, b)` of 𝔤 × 𝔥 (or of its dual), read as one vector of ℝ^{dim 𝔤 + dim 𝔥} by
 /// concatenation: component `i < dim 𝔤` is `a_i`, component `dim 𝔤 + i` is `b_i`.
@@ -164,30 +167,20 @@ impl<G: LieGroup, H: LieGroup> Product<G, H> {
     pub const TOLERANCE: f64 = 1e-9;
 }
 
-/// The block-diagonal matrix `diag(a, b)`.
-pub(crate) fn block_diag(a: MatRef<'_, f64>, b: MatRef<'_, f64>) -> Mat<f64> {
-    let (ra, ca) = (a.nrows(), a.ncols());
-    let mut out = Mat::zeros(ra + b.nrows(), ca + b.ncols());
-    out.as_mut().submatrix_mut(0, 0, ra, ca).copy_from(a);
-    out.as_mut()
-        .submatrix_mut(ra, ca, b.nrows(), b.ncols())
-        .copy_from(b);
-    out
-}
-
 /// `diag(A, B)` for two factor operators.
-fn op_diag<G: LieGroup, H: LieGroup>(a: &G::Operator, b: &H::Operator) -> Mat<f64> {
-    block_diag(a.to_mat().as_ref(), b.to_mat().as_ref())
+fn op_diag<G: LieGroup, H: LieGroup>(a: &G::Operator, b: &H::Operator) -> DMatrix<f64> {
+    block_diag(a.to_dmatrix().as_view(), b.to_dmatrix().as_view())
 }
 
 /// Size of the matrix representation of a group (its identity's).
 pub(crate) fn matrix_size<G: LieGroup>() -> usize {
-    G::identity().matrix().to_mat().nrows()
+    G::identity().matrix().to_dmatrix().nrows()
 }
 
 /// The diagonal block of `m` at `(start, start)` of size `k`, as the factor's matrix type.
-pub(crate) fn diag_block<G: LieGroup>(m: MatRef<'_, f64>, start: usize, k: usize) -> G::Matrix {
-    G::Matrix::from_mat(m.submatrix(start, start, k, k)).expect("a block of the factor's size")
+pub(crate) fn diag_block<G: LieGroup>(m: &DMatrix<f64>, start: usize, k: usize) -> G::Matrix {
+    let view: DMatrixView<'_, f64> = m.view((start, start), (k, k));
+    G::Matrix::from_dmatrix(view).expect("a block of the factor's size")
 }
 
 type Alg<G, H> = ProductAlgebra<G, H>;
@@ -196,8 +189,8 @@ impl<G: LieGroup, H: LieGroup> LieGroup for Product<G, H> {
     /// The smaller of the factors' radii: `‖(ξ, η)‖ ≤ r` bounds both `‖ξ‖` and `‖η‖` by r.
     const EXP_INVERTIBLE_RADIUS: f64 = G::EXP_INVERTIBLE_RADIUS.min(H::EXP_INVERTIBLE_RADIUS);
     type Algebra = ProductAlgebra<G, H>;
-    type Operator = Mat<f64>;
-    type Matrix = Mat<f64>;
+    type Operator = DMatrix<f64>;
+    type Matrix = DMatrix<f64>;
 
     /// `"G × H"`.
     fn name() -> String {
@@ -232,32 +225,32 @@ impl<G: LieGroup, H: LieGroup> LieGroup for Product<G, H> {
         Ok(ProductAlgebra::new(self.g.log()?, self.h.log()?))
     }
     /// `diag(ξ̂, η̂)`.
-    fn hat(xi: &Alg<G, H>) -> Mat<f64> {
+    fn hat(xi: &Alg<G, H>) -> DMatrix<f64> {
         block_diag(
-            G::hat(&xi.a).to_mat().as_ref(),
-            H::hat(&xi.b).to_mat().as_ref(),
+            G::hat(&xi.a).to_dmatrix().as_view(),
+            H::hat(&xi.b).to_dmatrix().as_view(),
         )
     }
     /// The factors' `vee` of the two diagonal blocks (the off-diagonal blocks are ignored).
-    fn vee(m: &Mat<f64>) -> Alg<G, H> {
+    fn vee(m: &DMatrix<f64>) -> Alg<G, H> {
         let (p, q) = (matrix_size::<G>(), matrix_size::<H>());
         ProductAlgebra::new(
-            G::vee(&diag_block::<G>(m.as_ref(), 0, p)),
-            H::vee(&diag_block::<H>(m.as_ref(), p, q)),
+            G::vee(&diag_block::<G>(m, 0, p)),
+            H::vee(&diag_block::<H>(m, p, q)),
         )
     }
     /// `diag(g, h)`.
-    fn matrix(&self) -> Mat<f64> {
+    fn matrix(&self) -> DMatrix<f64> {
         block_diag(
-            self.g.matrix().to_mat().as_ref(),
-            self.h.matrix().to_mat().as_ref(),
+            self.g.matrix().to_dmatrix().as_view(),
+            self.h.matrix().to_dmatrix().as_view(),
         )
     }
     /// Refuses a shape other than (p+q)×(p+q) (p, q the factors' matrix sizes), non-finite entries,
     /// off-diagonal blocks larger than [`Product::TOLERANCE`]` (1 + ‖M‖_max)`
     /// ([`StructureCheck::ProductOffDiagonal`]), and diagonal blocks that the factors'
     /// `from_matrix` refuse (their error is returned).
-    fn from_matrix(m: &Mat<f64>) -> Result<Self, LieError> {
+    fn from_matrix(m: &DMatrix<f64>) -> Result<Self, LieError> {
         let (p, q) = (matrix_size::<G>(), matrix_size::<H>());
         if m.nrows() != p + q || m.ncols() != p + q {
             return Err(LieError::DimensionMismatch {
@@ -296,24 +289,24 @@ impl<G: LieGroup, H: LieGroup> LieGroup for Product<G, H> {
             });
         }
         Ok(Self::new(
-            G::from_matrix(&diag_block::<G>(m.as_ref(), 0, p))?,
-            H::from_matrix(&diag_block::<H>(m.as_ref(), p, q))?,
+            G::from_matrix(&diag_block::<G>(m, 0, p))?,
+            H::from_matrix(&diag_block::<H>(m, p, q))?,
         ))
     }
     /// The factors' `from_matrix_unchecked` of the two diagonal blocks.
-    fn from_matrix_unchecked(m: &Mat<f64>) -> Self {
+    fn from_matrix_unchecked(m: &DMatrix<f64>) -> Self {
         let (p, q) = (matrix_size::<G>(), matrix_size::<H>());
         Self::new(
-            G::from_matrix_unchecked(&diag_block::<G>(m.as_ref(), 0, p)),
-            H::from_matrix_unchecked(&diag_block::<H>(m.as_ref(), p, q)),
+            G::from_matrix_unchecked(&diag_block::<G>(m, 0, p)),
+            H::from_matrix_unchecked(&diag_block::<H>(m, p, q)),
         )
     }
     /// `Ad_{(g,h)} = diag(Ad_g, Ad_h)`.
-    fn adjoint(&self) -> Mat<f64> {
+    fn adjoint(&self) -> DMatrix<f64> {
         op_diag::<G, H>(&self.g.adjoint(), &self.h.adjoint())
     }
     /// `ad_{(ξ,η)} = diag(ad_ξ, ad_η)`.
-    fn ad(xi: &Alg<G, H>) -> Mat<f64> {
+    fn ad(xi: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(&G::ad(&xi.a), &H::ad(&xi.b))
     }
     #[inline]
@@ -343,15 +336,15 @@ impl<G: LieGroup, H: LieGroup> LieGroup for Product<G, H> {
         )
     }
     /// `M(μ, ν) = diag(M(μ), M(ν))`.
-    fn ad_dual_operator(mu: &Alg<G, H>) -> Mat<f64> {
+    fn ad_dual_operator(mu: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(&G::ad_dual_operator(&mu.a), &H::ad_dual_operator(&mu.b))
     }
     /// `diag(d^L exp_ξ, d^L exp_η)`.
-    fn dexp_left(xi: &Alg<G, H>) -> Mat<f64> {
+    fn dexp_left(xi: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(&G::dexp_left(&xi.a), &H::dexp_left(&xi.b))
     }
     /// `diag((d^L exp_ξ)⁻¹, (d^L exp_η)⁻¹)`.
-    fn dexp_left_inv(xi: &Alg<G, H>) -> Mat<f64> {
+    fn dexp_left_inv(xi: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(&G::dexp_left_inv(&xi.a), &H::dexp_left_inv(&xi.b))
     }
     #[inline]
@@ -380,7 +373,7 @@ impl<G: LieGroup, H: LieGroup> LieGroup for Product<G, H> {
         )
     }
     /// `diag(D exp(ξ; μ), D exp(η; ν))`: the factors' own forms (exact where theirs are).
-    fn dexp_left_dual_derivative(xi: &Alg<G, H>, mu: &Alg<G, H>) -> Mat<f64> {
+    fn dexp_left_dual_derivative(xi: &Alg<G, H>, mu: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(
             &G::dexp_left_dual_derivative(&xi.a, &mu.a),
             &H::dexp_left_dual_derivative(&xi.b, &mu.b),
@@ -419,11 +412,11 @@ impl<G: CayleyGroup, H: CayleyGroup> CayleyGroup for Product<G, H> {
         Ok(ProductAlgebra::new(self.g.cay_inv()?, self.h.cay_inv()?))
     }
     /// `diag(d^L cay_ξ, d^L cay_η)`.
-    fn dcay_left(xi: &Alg<G, H>) -> Mat<f64> {
+    fn dcay_left(xi: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(&G::dcay_left(&xi.a), &H::dcay_left(&xi.b))
     }
     /// `diag((d^L cay_ξ)⁻¹, (d^L cay_η)⁻¹)`.
-    fn dcay_left_inv(xi: &Alg<G, H>) -> Mat<f64> {
+    fn dcay_left_inv(xi: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(&G::dcay_left_inv(&xi.a), &H::dcay_left_inv(&xi.b))
     }
     #[inline]
@@ -459,7 +452,7 @@ impl<G: CayleyGroup, H: CayleyGroup> CayleyGroup for Product<G, H> {
         )
     }
     /// `diag(D cay(ξ; μ), D cay(η; ν))`.
-    fn dcay_left_dual_derivative(xi: &Alg<G, H>, mu: &Alg<G, H>) -> Mat<f64> {
+    fn dcay_left_dual_derivative(xi: &Alg<G, H>, mu: &Alg<G, H>) -> DMatrix<f64> {
         op_diag::<G, H>(
             &G::dcay_left_dual_derivative(&xi.a, &mu.a),
             &H::dcay_left_dual_derivative(&xi.b, &mu.b),

@@ -10,13 +10,12 @@
 //!   `e^{ξ̂} = I + ξ̂` and the Cayley map `(I − ξ̂/2)⁻¹(I + ξ̂/2) = (I + ξ̂/2)² = I + ξ̂` equal the
 //!   identity map too, so `Rn` is a [`CayleyGroup`] with `cay = exp`.
 //!
-//! The matrix is a faer [`Mat`] (a stack `SMatrix<N + 1, N + 1>` is not expressible for a generic
+//! The matrix is a nalgebra [`DMatrix`] (a stack `SMatrix<N + 1, N + 1>` is not expressible for a generic
 //! `N` on stable Rust); it only serves `hat`, `matrix` and the generic matrix path, never a step of
 //! an integrator, which works on the stack vector alone.
 
 use crate::{CayleyGroup, LieError, LieGroup, StructureCheck};
-use faer::Mat;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{DMatrix, SMatrix, SVector};
 
 /// A point of ℝᴺ as an element of the additive group (see the module page for the conventions).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,7 +45,7 @@ impl<const N: usize> Rn<N> {
     /// farther than `tol` from `[0, …, 0, 1]` ([`LieError::NotHomogeneous`]) and a top-left block
     /// farther than `tol` from I ([`LieError::NotStructured`] with
     /// [`StructureCheck::TranslationLinearBlock`]).
-    pub fn from_matrix_with_tolerance(m: &Mat<f64>, tol: f64) -> Result<Self, LieError> {
+    pub fn from_matrix_with_tolerance(m: &DMatrix<f64>, tol: f64) -> Result<Self, LieError> {
         if m.nrows() != N + 1 || m.ncols() != N + 1 {
             return Err(LieError::DimensionMismatch {
                 expected: N + 1,
@@ -96,7 +95,7 @@ impl<const N: usize> LieGroup for Rn<N> {
     const EXP_INVERTIBLE_RADIUS: f64 = 1e100;
     type Algebra = SVector<f64, N>;
     type Operator = SMatrix<f64, N, N>;
-    type Matrix = Mat<f64>;
+    type Matrix = DMatrix<f64>;
 
     fn name() -> String {
         format!("R^{N}")
@@ -135,20 +134,20 @@ impl<const N: usize> LieGroup for Rn<N> {
         }
     }
     /// `ξ̂ = [[0, ξ], [0, 0]]`, (N+1)×(N+1).
-    fn hat(xi: &SVector<f64, N>) -> Mat<f64> {
-        Mat::from_fn(
+    fn hat(xi: &SVector<f64, N>) -> DMatrix<f64> {
+        DMatrix::from_fn(
             N + 1,
             N + 1,
             |i, j| if j == N && i < N { xi[i] } else { 0.0 },
         )
     }
     /// The last column's first N entries (the rest of the matrix is ignored).
-    fn vee(m: &Mat<f64>) -> SVector<f64, N> {
+    fn vee(m: &DMatrix<f64>) -> SVector<f64, N> {
         SVector::from_fn(|i, _| m[(i, N)])
     }
     /// `[[I, x], [0, 1]]`.
-    fn matrix(&self) -> Mat<f64> {
-        Mat::from_fn(N + 1, N + 1, |i, j| {
+    fn matrix(&self) -> DMatrix<f64> {
+        DMatrix::from_fn(N + 1, N + 1, |i, j| {
             if i == j {
                 1.0
             } else if j == N {
@@ -159,11 +158,11 @@ impl<const N: usize> LieGroup for Rn<N> {
         })
     }
     /// Checked with [`Rn::TOLERANCE`]; see [`Rn::from_matrix_with_tolerance`].
-    fn from_matrix(m: &Mat<f64>) -> Result<Self, LieError> {
+    fn from_matrix(m: &DMatrix<f64>) -> Result<Self, LieError> {
         Self::from_matrix_with_tolerance(m, Self::TOLERANCE)
     }
     /// Reads x off the last column.
-    fn from_matrix_unchecked(m: &Mat<f64>) -> Self {
+    fn from_matrix_unchecked(m: &DMatrix<f64>) -> Self {
         Self::new(Self::vee(m))
     }
     /// `Ad_x = I` (abelian).
@@ -308,10 +307,24 @@ impl<const N: usize> CayleyGroup for Rn<N> {
     }
 }
 
-/// Translation of points: `x · p = p + x`.
+/// Translation of points: `x · p = p + x`; every Jacobian is I.
 impl<const N: usize> crate::Action<SVector<f64, N>> for Rn<N> {
+    type PointJacobian = SMatrix<f64, N, N>;
+    type GroupJacobian = SMatrix<f64, N, N>;
     #[inline]
     fn act(&self, p: &SVector<f64, N>) -> SVector<f64, N> {
         p + self.x
+    }
+    #[inline]
+    fn act_jacobian_point(&self, _p: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+        SMatrix::identity()
+    }
+    #[inline]
+    fn act_jacobian_left(&self, _p: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+        SMatrix::identity()
+    }
+    #[inline]
+    fn act_jacobian_right(&self, _p: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+        SMatrix::identity()
     }
 }

@@ -409,11 +409,32 @@ impl CayleyGroup for Se2 {
     }
 }
 
-/// Rigid motion of plane points: `g · p = R p + t`.
+/// Rigid motion of plane points: `g · p = R p + t`. The Jacobians with respect to g are 2×3 in
+/// the algebra's order (ω, vx, vy).
 impl Action<Vector2<f64>> for Se2 {
+    type PointJacobian = Matrix2<f64>;
+    type GroupJacobian = nalgebra::Matrix2x3<f64>;
     #[inline]
     fn act(&self, p: &Vector2<f64>) -> Vector2<f64> {
         self.rot.rotate(p) + self.t
+    }
+    /// `R`.
+    #[inline]
+    fn act_jacobian_point(&self, _p: &Vector2<f64>) -> Matrix2<f64> {
+        self.rot.matrix()
+    }
+    /// `g exp(δ) · p ≈ g · (p + ω J p + v)` for δ = (ω, v), J the rotation by π/2: `R [J p, I]`.
+    #[inline]
+    fn act_jacobian_left(&self, p: &Vector2<f64>) -> nalgebra::Matrix2x3<f64> {
+        let r = self.rot.matrix();
+        let jp = r * Vector2::new(-p.y, p.x);
+        nalgebra::Matrix2x3::new(jp.x, r[(0, 0)], r[(0, 1)], jp.y, r[(1, 0)], r[(1, 1)])
+    }
+    /// `exp(δ) · q ≈ q + ω J q + v` at `q = g · p`: `[J q, I]`.
+    #[inline]
+    fn act_jacobian_right(&self, p: &Vector2<f64>) -> nalgebra::Matrix2x3<f64> {
+        let q = self.act(p);
+        nalgebra::Matrix2x3::new(-q.y, 1.0, 0.0, q.x, 0.0, 1.0)
     }
 }
 

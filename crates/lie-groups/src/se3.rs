@@ -467,10 +467,37 @@ impl CayleyGroup for Se3 {
     }
 }
 
-/// Rigid motion of points: `(R, t) · p = R p + t`.
+/// Rigid motion of points: `(R, t) · p = R p + t`. The Jacobians with respect to g are 3×6 in the
+/// algebra's order (ω, v).
 impl Action<Vector3<f64>> for Se3 {
+    type PointJacobian = Matrix3<f64>;
+    type GroupJacobian = nalgebra::Matrix3x6<f64>;
     #[inline]
     fn act(&self, p: &Vector3<f64>) -> Vector3<f64> {
         self.rot.as_matrix() * p + self.t
+    }
+    /// `R`.
+    #[inline]
+    fn act_jacobian_point(&self, _p: &Vector3<f64>) -> Matrix3<f64> {
+        *self.rot.as_matrix()
+    }
+    /// `g exp(δ) · p ≈ g · (p + ω × p + v)` for δ = (ω, v): `[−R p̂, R]`.
+    #[inline]
+    fn act_jacobian_left(&self, p: &Vector3<f64>) -> nalgebra::Matrix3x6<f64> {
+        let r = self.rot.as_matrix();
+        let mut j = nalgebra::Matrix3x6::zeros();
+        j.fixed_view_mut::<3, 3>(0, 0).copy_from(&-(r * skew(p)));
+        j.fixed_view_mut::<3, 3>(0, 3).copy_from(r);
+        j
+    }
+    /// `exp(δ) · q ≈ q + ω × q + v` at `q = g · p`: `[−q̂, I]`.
+    #[inline]
+    fn act_jacobian_right(&self, p: &Vector3<f64>) -> nalgebra::Matrix3x6<f64> {
+        let q = self.act(p);
+        let mut j = nalgebra::Matrix3x6::zeros();
+        j.fixed_view_mut::<3, 3>(0, 0).copy_from(&-skew(&q));
+        j.fixed_view_mut::<3, 3>(0, 3)
+            .copy_from(&Matrix3::identity());
+        j
     }
 }

@@ -289,9 +289,27 @@ impl CayleyGroup for So2 {
 
 /// Rotation of plane vectors: `g · p = R p`.
 impl Action<Vector2<f64>> for So2 {
+    type PointJacobian = nalgebra::Matrix2<f64>;
+    type GroupJacobian = nalgebra::Vector2<f64>;
     #[inline]
     fn act(&self, p: &Vector2<f64>) -> Vector2<f64> {
         self.rotate(p)
+    }
+    /// `R`.
+    #[inline]
+    fn act_jacobian_point(&self, _p: &Vector2<f64>) -> nalgebra::Matrix2<f64> {
+        self.matrix()
+    }
+    /// `R exp(δ) p ≈ R (p + δ J p)`, J the rotation by π/2: `R J p` (2×1).
+    #[inline]
+    fn act_jacobian_left(&self, p: &Vector2<f64>) -> Vector2<f64> {
+        self.rotate(&Vector2::new(-p.y, p.x))
+    }
+    /// `exp(δ) R p ≈ R p + δ J R p`: `J R p` (equal to the left one: SO(2) is abelian).
+    #[inline]
+    fn act_jacobian_right(&self, p: &Vector2<f64>) -> Vector2<f64> {
+        let q = self.rotate(p);
+        Vector2::new(-q.y, q.x)
     }
 }
 

@@ -945,9 +945,26 @@ impl CayleyGroup for So3 {
 
 /// Rotation of vectors: `R · p`.
 impl Action<Vector3<f64>> for So3 {
+    type PointJacobian = Matrix3<f64>;
+    type GroupJacobian = Matrix3<f64>;
     #[inline]
     fn act(&self, p: &Vector3<f64>) -> Vector3<f64> {
         self.r * p
+    }
+    /// `R`.
+    #[inline]
+    fn act_jacobian_point(&self, _p: &Vector3<f64>) -> Matrix3<f64> {
+        self.r
+    }
+    /// `R exp(δ) p ≈ R (p + δ × p)`: `−R p̂`.
+    #[inline]
+    fn act_jacobian_left(&self, p: &Vector3<f64>) -> Matrix3<f64> {
+        -(self.r * skew(p))
+    }
+    /// `exp(δ) R p ≈ R p + δ × (R p)`: `−(R p)^`.
+    #[inline]
+    fn act_jacobian_right(&self, p: &Vector3<f64>) -> Matrix3<f64> {
+        -skew(&(self.r * p))
     }
 }
 

@@ -176,6 +176,14 @@ impl<G: LieGroup> Tau<G> for ExpMap {
         G::dexp_left_inv(xi)
     }
     #[inline]
+    fn dtau_right(xi: &G::Algebra) -> G::Operator {
+        G::dexp_right(xi)
+    }
+    #[inline]
+    fn dtau_right_inv(xi: &G::Algebra) -> G::Operator {
+        G::dexp_right_inv(xi)
+    }
+    #[inline]
     fn tau_coadjoint_increment(xi: &G::Algebra, mu: &G::Algebra) -> G::Algebra {
         G::exp_coadjoint_increment(xi, mu)
     }

@@ -5,6 +5,7 @@
 //! lie_groups::lie_group_suite!(so3, lie_groups::So3, 2.5);
 //! lie_groups::tau_suite!(so3_cayley, lie_groups::So3, lie_groups::Cayley, 2.5);
 //! lie_groups::cayley_group_suite!(so3_cayley_closed_forms, lie_groups::So3, 2.5);
+//! lie_groups::action_suite!(so3_action, lie_groups::So3, nalgebra::Vector3<f64>, 3, 2.5);
 //! ```
 //!
 //! Each check takes algebra elements (random ones come from proptest through [`algebra`]) and
@@ -13,9 +14,9 @@
 //! series with scaling and squaring, tangent maps by central finite differences, Ad and ad on the
 //! matrix representation.
 
-use crate::matrix::dense::max_abs_diff;
+use crate::linalg::max_abs_diff;
 use crate::{matrix_path, CayleyGroup, DenseMatrix, LieGroup, Operator, Tau, Vector};
-use faer::{Mat, MatRef};
+use nalgebra::{DMatrix, DMatrixView};
 pub use proptest;
 
 mod allocations;
@@ -29,24 +30,21 @@ pub fn algebra<G: LieGroup>(scale: f64) -> impl Strategy<Value = G::Algebra> {
 }
 
 /// e^A by a Taylor series on A/2ˢ (‖A/2ˢ‖₁ ≤ 1/2, 40 terms) and s squarings: a reference
-/// independent of the Padé approximant in [`crate::matrix::dense::expm`].
-pub fn expm_taylor(a: MatRef<'_, f64>) -> Mat<f64> {
+/// independent of the Padé approximant in [`crate::linalg::expm`].
+pub fn expm_taylor(a: DMatrixView<'_, f64>) -> DMatrix<f64> {
     let n = a.nrows();
-    let norm = crate::matrix::dense::norm1(a);
+    let norm = crate::linalg::norm1(a);
     let s = if norm > 0.5 {
         (norm / 0.5).log2().ceil() as i32
     } else {
         0
     };
-    let scale = 0.5f64.powi(s);
-    let x = Mat::from_fn(n, n, |i, j| scale * a[(i, j)]);
-    let mut term = Mat::<f64>::identity(n, n);
+    let x = a * 0.5f64.powi(s);
+    let mut term = DMatrix::<f64>::identity(n, n);
     let mut sum = term.clone();
     for k in 1..40 {
-        term = Mat::from_fn(n, n, |i, j| {
-            (0..n).map(|l| term[(i, l)] * x[(l, j)]).sum::<f64>() / k as f64
-        });
-        sum = &sum + &term;
+        term = &term * &x / k as f64;
+        sum += &term;
     }
     for _ in 0..s {
         sum = &sum * &sum;
@@ -54,8 +52,16 @@ pub fn expm_taylor(a: MatRef<'_, f64>) -> Mat<f64> {
     sum
 }
 
+fn dm<M: DenseMatrix>(m: &M) -> DMatrix<f64> {
+    m.to_dmatrix()
+}
+
+fn mat_diff<A: DenseMatrix, B: DenseMatrix>(a: &A, b: &B) -> f64 {
+    max_abs_diff(dm(a).as_view(), dm(b).as_view())
+}
+
 fn op_diff<G: LieGroup>(a: &G::Operator, b: &G::Operator) -> f64 {
-    max_abs_diff(a.to_mat().as_ref(), b.to_mat().as_ref())
+    mat_diff(a, b)
 }
 
 fn vec_diff<V: Vector>(a: &V, b: &V) -> f64 {
@@ -63,7 +69,7 @@ fn vec_diff<V: Vector>(a: &V, b: &V) -> f64 {
 }
 
 fn scale_of<G: LieGroup>(g: &G) -> f64 {
-    1.0 + g.matrix().to_mat().as_ref().norm_max()
+    1.0 + dm(&g.matrix()).amax()
 }
 
 /// Asserts `x ≤ tol`, naming the property.
@@ -108,10 +114,10 @@ pub fn check_group_axioms<G: LieGroup>(a: &G::Algebra, b: &G::Algebra, c: &G::Al
         1e-13 * s,
     );
     // the product is the matrix product of the representation
-    let prod = &g.matrix().to_mat() * &h.matrix().to_mat();
+    let prod = dm(&g.matrix()) * dm(&h.matrix());
     assert_small(
         "matrix(gh) = matrix(g) matrix(h)",
-        max_abs_diff(g.compose(&h).matrix().to_mat().as_ref(), prod.as_ref()),
+        max_abs_diff(dm(&g.compose(&h).matrix()).as_view(), prod.as_view()),
         1e-13 * s,
     );
 }
@@ -132,10 +138,10 @@ pub fn check_exp_log<G: LieGroup>(a: &G::Algebra) {
         G::exp(&back).matrix_distance(&g),
         1e-12 * s,
     );
-    let reference = expm_taylor(G::hat(a).to_mat().as_ref());
+    let reference = expm_taylor(dm(&G::hat(a)).as_view());
     assert_small(
         "exp ξ = Taylor series of e^{ξ̂}",
-        max_abs_diff(g.matrix().to_mat().as_ref(), reference.as_ref()),
+        max_abs_diff(dm(&g.matrix()).as_view(), reference.as_view()),
         1e-12 * s,
     );
     assert_small(
@@ -169,10 +175,10 @@ pub fn check_adjoint<G: LieGroup>(a: &G::Algebra, b: &G::Algebra, c: &G::Algebra
         op_diff::<G>(&adg, &matrix_path::adjoint(&g)),
         1e-12 * s2,
     );
-    let exp_ad = crate::matrix::dense::expm(G::ad(a).to_mat().as_ref());
+    let exp_ad = expm_taylor(dm(&G::ad(a)).as_view());
     assert_small(
         "Ad_{exp ξ} = exp(ad_ξ)",
-        max_abs_diff(adg.to_mat().as_ref(), exp_ad.as_ref()),
+        max_abs_diff(dm(&adg).as_view(), exp_ad.as_view()),
         1e-11 * s2,
     );
     assert_small(
@@ -369,6 +375,340 @@ pub fn check_tau<G: LieGroup, T: Tau<G>>(a: &G::Algebra, mu: &G::Algebra) {
     );
 }
 
+/// Step of the central differences of the Jacobian checks below.
+const FD_STEP: f64 = 1e-5;
+
+/// The left-trivialized Jacobian of a map F: G → G at g by central differences: column j =
+/// `(log(F(g)⁻¹ F(g e^{h eⱼ})) − log(F(g)⁻¹ F(g e^{−h eⱼ}))) / 2h`.
+pub fn fd_map_left<G: LieGroup>(f: impl Fn(&G) -> G, g: &G) -> G::Operator {
+    let base_inv = f(g).inverse();
+    matrix_path::operator_from_columns::<G>(|e| {
+        let side = |s: f64| {
+            base_inv
+                .compose(&f(&g.compose(&G::exp(&e.scale(s * FD_STEP)))))
+                .log()
+                .expect("log near e")
+        };
+        side(1.0).sub(&side(-1.0)).scale(0.5 / FD_STEP)
+    })
+}
+
+/// The right-trivialized Jacobian of F: G → G at g by central differences: column j =
+/// `(log(F(e^{h eⱼ} g) F(g)⁻¹) − log(F(e^{−h eⱼ} g) F(g)⁻¹)) / 2h`.
+pub fn fd_map_right<G: LieGroup>(f: impl Fn(&G) -> G, g: &G) -> G::Operator {
+    let base_inv = f(g).inverse();
+    matrix_path::operator_from_columns::<G>(|e| {
+        let side = |s: f64| {
+            f(&G::exp(&e.scale(s * FD_STEP)).compose(g))
+                .compose(&base_inv)
+                .log()
+                .expect("log near e")
+        };
+        side(1.0).sub(&side(-1.0)).scale(0.5 / FD_STEP)
+    })
+}
+
+/// The Jacobian of a map f: G → 𝔤 at g by central differences, perturbing g on the right
+/// (`left = true`: g e^{±h eⱼ}, the left-trivialized Jacobian) or on the left (e^{±h eⱼ} g).
+pub fn fd_to_algebra<G: LieGroup>(f: impl Fn(&G) -> G::Algebra, g: &G, left: bool) -> G::Operator {
+    matrix_path::operator_from_columns::<G>(|e| {
+        let side = |s: f64| {
+            let d = G::exp(&e.scale(s * FD_STEP));
+            f(&if left { g.compose(&d) } else { d.compose(g) })
+        };
+        side(1.0).sub(&side(-1.0)).scale(0.5 / FD_STEP)
+    })
+}
+
+/// ⊕/⊖ on both sides, `between` and interpolation on g = exp(a), h = exp(b) with increment ξ = c
+/// (all inside the domain of log, as for [`check_exp_log`]):
+/// - `(g ⊕ ξ) ⊖ g = ξ` and `g ⊕ (h ⊖ g) = h`, and the same for the right-trivialized pair;
+/// - `between(g, g) = e`, `g · between(g, h) = h`;
+/// - the interpolation `γ(t) = g exp(t log(g⁻¹ h))` has `γ(0) = g`, `γ(1) = h`, and constant body
+///   velocity: `log(γ(s)⁻¹ γ(t)) = (t − s) log(g⁻¹ h)`.
+pub fn check_plus_minus_between_interpolate<G: LieGroup>(
+    a: &G::Algebra,
+    b: &G::Algebra,
+    c: &G::Algebra,
+) {
+    let (g, h) = (G::exp(a), G::exp(b));
+    let s = scale_of(&g) * scale_of(&h) * scale_of(&G::exp(c));
+    let tol = 1e-11 * s * s * (1.0 + c.norm());
+    let back = g.plus_left(c).minus_left(&g).expect("(g ⊕ ξ) ⊖ g exists");
+    assert_small("(g ⊕ ξ) ⊖ g = ξ", vec_diff(&back, c), tol);
+    let back = g
+        .plus_right(c)
+        .minus_right(&g)
+        .expect("log((exp(ξ) g) g⁻¹) exists");
+    assert_small("log((exp(ξ) g) g⁻¹) = ξ", vec_diff(&back, c), tol);
+    let d = h.minus_left(&g).expect("h ⊖ g exists");
+    assert_small(
+        "g ⊕ (h ⊖ g) = h",
+        g.plus_left(&d).matrix_distance(&h),
+        1e-12 * s * s,
+    );
+    let d = h.minus_right(&g).expect("log(h g⁻¹) exists");
+    assert_small(
+        "exp(log(h g⁻¹)) g = h",
+        g.plus_right(&d).matrix_distance(&h),
+        1e-12 * s * s,
+    );
+    assert_small(
+        "between(g, g) = e",
+        g.between(&g).matrix_distance(&G::identity()),
+        1e-13 * s * s,
+    );
+    assert_small(
+        "g · between(g, h) = h",
+        g.compose(&g.between(&h)).matrix_distance(&h),
+        1e-12 * s * s,
+    );
+    let at = |t: f64| g.interpolate(&h, t).expect("log(g⁻¹ h) exists");
+    assert_small(
+        "interpolate(g, h, 0) = g",
+        at(0.0).matrix_distance(&g),
+        1e-13 * s * s,
+    );
+    assert_small(
+        "interpolate(g, h, 1) = h",
+        at(1.0).matrix_distance(&h),
+        1e-12 * s * s,
+    );
+    let tau = h.minus_left(&g).expect("log(g⁻¹ h) exists");
+    for (t0, t1) in [(0.0, 0.25), (0.25, 0.5), (0.5, 1.0), (0.3, 0.9)] {
+        let step = at(t0)
+            .between(&at(t1))
+            .log()
+            .expect("log along the curve exists");
+        assert_small(
+            "log(γ(s)⁻¹ γ(t)) = (t − s) log(g⁻¹ h) (constant speed)",
+            vec_diff(&step, &tau.scale(t1 - t0)),
+            1e-11 * s * s * (1.0 + tau.norm()),
+        );
+    }
+}
+
+/// Every Jacobian of the group against central finite differences, at g = exp(a), h = exp(b) and
+/// increment ξ = c, in both trivializations: exp (`d^L exp`, `d^R exp` and their inverses), log,
+/// compose, inverse, between, ⊕ and ⊖. The differences have truncation error O(h²) = O(1e-10)
+/// times the third derivatives and rounding O(ε/h) = O(1e-11), hence the tolerance
+/// 1e-7 (1 + ‖matrix‖)⁴.
+pub fn check_jacobians<G: LieGroup>(a: &G::Algebra, b: &G::Algebra, c: &G::Algebra) {
+    let (g, h) = (G::exp(a), G::exp(b));
+    let s = scale_of(&g) * scale_of(&h) * scale_of(&G::exp(c));
+    let tol = 1e-7 * s * s;
+    // Every Jacobian is compared before the check fails, so that one run names all that are wrong.
+    let failures = core::cell::RefCell::new(Vec::new());
+    let check = |what: &str, ours: &G::Operator, fd: &G::Operator| {
+        let e = op_diff::<G>(ours, fd);
+        // a NaN error fails too
+        if e.is_nan() || e > tol {
+            failures
+                .borrow_mut()
+                .push(format!("{what}: error {e:.3e} exceeds tolerance {tol:.1e}"));
+        }
+    };
+    // exp
+    check(
+        "d^L exp_ξ = finite differences (manif rjac)",
+        &G::dexp_left(c),
+        &fd_left::<G>(|x| G::exp(x), c),
+    );
+    check(
+        "d^R exp_ξ = finite differences (manif ljac)",
+        &G::dexp_right(c),
+        &fd_right::<G>(|x| G::exp(x), c),
+    );
+    check_inverse_pair::<G>(
+        "d^R exp_ξ (d^R exp_ξ)⁻¹ = I",
+        &G::dexp_right(c),
+        &G::dexp_right_inv(c),
+        1e-11 * s * s,
+    );
+    // log
+    check(
+        "log Jacobian (left) = finite differences",
+        &g.log_jacobian_left().expect("log g exists"),
+        &fd_to_algebra::<G>(|x| x.log().expect("log exists"), &g, true),
+    );
+    check(
+        "log Jacobian (right) = finite differences",
+        &g.log_jacobian_right().expect("log g exists"),
+        &fd_to_algebra::<G>(|x| x.log().expect("log exists"), &g, false),
+    );
+    // compose
+    let (jg, jh) = g.compose_jacobians_left(&h);
+    check(
+        "∂(gh)/∂g (left) = finite differences",
+        &jg,
+        &fd_map_left::<G>(|x| x.compose(&h), &g),
+    );
+    check(
+        "∂(gh)/∂h (left) = finite differences",
+        &jh,
+        &fd_map_left::<G>(|x| g.compose(x), &h),
+    );
+    let (jg, jh) = g.compose_jacobians_right(&h);
+    check(
+        "∂(gh)/∂g (right) = finite differences",
+        &jg,
+        &fd_map_right::<G>(|x| x.compose(&h), &g),
+    );
+    check(
+        "∂(gh)/∂h (right) = finite differences",
+        &jh,
+        &fd_map_right::<G>(|x| g.compose(x), &h),
+    );
+    // inverse
+    check(
+        "∂(g⁻¹)/∂g (left) = finite differences",
+        &g.inverse_jacobian_left(),
+        &fd_map_left::<G>(|x| x.inverse(), &g),
+    );
+    check(
+        "∂(g⁻¹)/∂g (right) = finite differences",
+        &g.inverse_jacobian_right(),
+        &fd_map_right::<G>(|x| x.inverse(), &g),
+    );
+    // between
+    let (jg, jh) = g.between_jacobians_left(&h);
+    check(
+        "∂(g⁻¹h)/∂g (left) = finite differences",
+        &jg,
+        &fd_map_left::<G>(|x| x.between(&h), &g),
+    );
+    check(
+        "∂(g⁻¹h)/∂h (left) = finite differences",
+        &jh,
+        &fd_map_left::<G>(|x| g.between(x), &h),
+    );
+    let (jg, jh) = g.between_jacobians_right(&h);
+    check(
+        "∂(g⁻¹h)/∂g (right) = finite differences",
+        &jg,
+        &fd_map_right::<G>(|x| x.between(&h), &g),
+    );
+    check(
+        "∂(g⁻¹h)/∂h (right) = finite differences",
+        &jh,
+        &fd_map_right::<G>(|x| g.between(x), &h),
+    );
+    // ⊕
+    let (jg, jx) = g.plus_left_jacobians(c);
+    check(
+        "∂(g ⊕ ξ)/∂g (left) = finite differences",
+        &jg,
+        &fd_map_left::<G>(|x| x.plus_left(c), &g),
+    );
+    check(
+        "∂(g ⊕ ξ)/∂ξ (left) = finite differences",
+        &jx,
+        &fd_left::<G>(|x| g.plus_left(x), c),
+    );
+    let (jg, jx) = g.plus_right_jacobians(c);
+    check(
+        "∂(exp(ξ) g)/∂g (left) = finite differences (manif lplus J_mout_m)",
+        &jg,
+        &fd_map_left::<G>(|x| x.plus_right(c), &g),
+    );
+    check(
+        "∂(exp(ξ) g)/∂ξ (left) = finite differences (manif lplus J_mout_t)",
+        &jx,
+        &fd_left::<G>(|x| g.plus_right(x), c),
+    );
+    // ⊖
+    let (jh, jg) = h.minus_left_jacobians(&g).expect("h ⊖ g exists");
+    check(
+        "∂(h ⊖ g)/∂h (left) = finite differences",
+        &jh,
+        &fd_to_algebra::<G>(|x| x.minus_left(&g).expect("⊖ exists"), &h, true),
+    );
+    check(
+        "∂(h ⊖ g)/∂g (left) = finite differences",
+        &jg,
+        &fd_to_algebra::<G>(|x| h.minus_left(x).expect("⊖ exists"), &g, true),
+    );
+    let (jh, jg) = h.minus_right_jacobians(&g).expect("log(h g⁻¹) exists");
+    check(
+        "∂log(h g⁻¹)/∂h (left) = finite differences (manif lminus J_t_ma)",
+        &jh,
+        &fd_to_algebra::<G>(|x| x.minus_right(&g).expect("exists"), &h, true),
+    );
+    check(
+        "∂log(h g⁻¹)/∂g (left) = finite differences (manif lminus J_t_mb)",
+        &jg,
+        &fd_to_algebra::<G>(|x| h.minus_right(x).expect("exists"), &g, true),
+    );
+    let failures = failures.into_inner();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The distances from the identity at which [`check_operations_near_zero`] evaluates: where the
+/// closed forms switch to their Taylor branches (|ξ| ≲ 1e-3 for most) and far inside them.
+pub const NEAR_ZERO: [f64; 3] = [1e-9, 1e-6, 1e-3];
+
+/// [`check_plus_minus_between_interpolate`] and [`check_jacobians`] with a = r u, b = r v and
+/// c = r w for the unit directions u, v, w of the given ones and every r in [`NEAR_ZERO`].
+/// (Near rotation angle π the groups differ in which coordinates rotate; `tests/suite/so3.rs` and
+/// `se3.rs` run the same checks there.)
+pub fn check_operations_near_zero<G: LieGroup>(u: &G::Algebra, v: &G::Algebra, w: &G::Algebra) {
+    let unit = |x: &G::Algebra| x.scale(1.0 / x.norm().max(f64::MIN_POSITIVE));
+    let (u, v, w) = (unit(u), unit(v), unit(w));
+    if u.norm() < 0.5 || v.norm() < 0.5 || w.norm() < 0.5 {
+        return; // a zero direction: nothing to scale
+    }
+    for r in NEAR_ZERO {
+        let (a, b, c) = (u.scale(r), v.scale(r), w.scale(r));
+        check_plus_minus_between_interpolate::<G>(&a, &b, &c);
+        check_jacobians::<G>(&a, &b, &c);
+    }
+}
+
+/// The action's Jacobians against central finite differences at g = exp(a) and the point p:
+/// `∂(g·p)/∂p`, the left- and right-trivialized `∂(g·p)/∂g`, and `J^R = J^L Ad_{g⁻¹}`.
+pub fn check_action<G, P>(a: &G::Algebra, p: &P)
+where
+    G: LieGroup + crate::Action<P>,
+    P: Vector,
+{
+    let g = G::exp(a);
+    let s = scale_of(&g) * (1.0 + p.norm());
+    let (m, n) = (p.dim(), G::dim());
+    let fd = |cols: usize, f: &dyn Fn(usize, f64) -> P| {
+        DMatrix::from_fn(m, cols, |i, j| {
+            (f(j, FD_STEP).get(i) - f(j, -FD_STEP).get(i)) * (0.5 / FD_STEP)
+        })
+    };
+    let e = |j: usize, h: f64| G::Algebra::basis(n, j).scale(h);
+    let point = fd(m, &|j, h| g.act(&p.add(&P::basis(m, j).scale(h))));
+    let left = fd(n, &|j, h| g.compose(&G::exp(&e(j, h))).act(p));
+    let right = fd(n, &|j, h| G::exp(&e(j, h)).compose(&g).act(p));
+    let tol = 1e-7 * s * s;
+    let jl = dm(&g.act_jacobian_left(p));
+    assert_small(
+        "∂(g·p)/∂p = finite differences",
+        max_abs_diff(dm(&g.act_jacobian_point(p)).as_view(), point.as_view()),
+        tol,
+    );
+    assert_small(
+        "∂(g·p)/∂g (left) = finite differences",
+        max_abs_diff(jl.as_view(), left.as_view()),
+        tol,
+    );
+    let jr = dm(&g.act_jacobian_right(p));
+    assert_small(
+        "∂(g·p)/∂g (right) = finite differences",
+        max_abs_diff(jr.as_view(), right.as_view()),
+        tol,
+    );
+    let via_ad = &jl * dm(&g.inverse().adjoint());
+    assert_small(
+        "J^R = J^L Ad_{g⁻¹}",
+        max_abs_diff(jr.as_view(), via_ad.as_view()),
+        1e-12 * s * s,
+    );
+}
+
 /// The closed forms of a group agree with the generic matrix-group path: exp, log, cay, cay⁻¹,
 /// d^L cay and its inverse.
 pub fn check_cayley_closed_forms<G: CayleyGroup>(a: &G::Algebra) {
@@ -420,7 +760,11 @@ macro_rules! lie_group_suite {
             #[allow(unused_imports)]
             use super::*;
             use $crate::testing::proptest::prelude::*;
-            use $crate::testing::{algebra, check_adjoint, check_dexp, check_exp_log, check_group_axioms};
+            use $crate::testing::{
+                algebra, check_adjoint, check_dexp, check_exp_log, check_group_axioms,
+                check_jacobians, check_operations_near_zero,
+                check_plus_minus_between_interpolate,
+            };
             type G = $G;
             $crate::testing::proptest::proptest! {
                 #![proptest_config(ProptestConfig::with_cases(48))]
@@ -439,6 +783,42 @@ macro_rules! lie_group_suite {
                 #[test]
                 fn dexp_matches_finite_differences_and_inverts(a in algebra::<G>($scale)) {
                     check_dexp::<G>(&a);
+                }
+                #[test]
+                fn plus_minus_invert_and_interpolation_has_constant_speed(a in algebra::<G>($scale), b in algebra::<G>($scale), c in algebra::<G>($scale)) {
+                    check_plus_minus_between_interpolate::<G>(&a, &b, &c);
+                }
+                #[test]
+                fn jacobians_match_finite_differences(a in algebra::<G>($scale), b in algebra::<G>($scale), c in algebra::<G>($scale)) {
+                    check_jacobians::<G>(&a, &b, &c);
+                }
+            }
+            $crate::testing::proptest::proptest! {
+                #![proptest_config(ProptestConfig::with_cases(8))]
+                #[test]
+                fn operations_and_jacobians_hold_near_zero(u in algebra::<G>(1.0), v in algebra::<G>(1.0), w in algebra::<G>(1.0)) {
+                    check_operations_near_zero::<G>(&u, &v, &w);
+                }
+            }
+        }
+    };
+}
+
+/// Instantiates the action checks: `action_suite!(module, Group, Point, point_dim, scale)`.
+#[macro_export]
+macro_rules! action_suite {
+    ($name:ident, $G:ty, $P:ty, $pdim:expr, $scale:expr) => {
+        mod $name {
+            #[allow(unused_imports)]
+            use super::*;
+            use $crate::testing::proptest::prelude::*;
+            use $crate::testing::{algebra, check_action};
+            $crate::testing::proptest::proptest! {
+                #![proptest_config(ProptestConfig::with_cases(48))]
+                #[test]
+                fn action_jacobians_match_finite_differences(a in algebra::<$G>($scale), p in $crate::testing::proptest::collection::vec(-2.0..2.0f64, $pdim)) {
+                    let p = <$P as $crate::Vector>::from_fn($pdim, |i| p[i]);
+                    check_action::<$G, $P>(&a, &p);
                 }
             }
         }

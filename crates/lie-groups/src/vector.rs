@@ -1,12 +1,13 @@
 //! Algebra coordinates: the vector space ℝⁿ ≅ 𝔤 (by `hat`/`vee`) and ℝⁿ ≅ 𝔤* (by the Euclidean
 //! pairing ⟨μ, ξ⟩ = μ·ξ).
 //!
-//! Fixed-size groups use nalgebra's stack vectors [`SVector`]; groups whose dimension is only known
-//! through a large `n` (SO(n), GL(n)) use faer's [`Col`]. Bundles pair two such vectors
-//! (`trivial_bundles::Pair`). Everything generic in the workspace goes through this trait.
+//! Fixed-size groups use nalgebra's stack vectors [`SVector`]; the composite groups pair or array
+//! them ([`crate::ProductAlgebra`], [`crate::PowerAlgebra`]); with the `faer` feature, groups whose
+//! dimension is only known through a large `n` (SO(n), GL(n)) use faer's `Col`. Bundles pair two
+//! such vectors (`trivial_bundles::Pair`). Everything generic in the workspace goes through this
+//! trait.
 
 use core::fmt::Debug;
-use faer::Col;
 use nalgebra::SVector;
 
 /// An element of ℝⁿ used as coordinates of 𝔤 or 𝔤*.
@@ -64,16 +65,18 @@ pub trait Vector: Clone + Debug + PartialEq + Send + Sync + 'static {
         }
         v
     }
-    /// The components as a faer column (for dense linear algebra).
-    fn to_col(&self) -> Col<f64> {
-        Col::from_fn(self.dim(), |i| self.get(i))
+    /// The components as a faer column (for dense linear algebra; feature `faer`).
+    #[cfg(feature = "faer")]
+    fn to_col(&self) -> faer::Col<f64> {
+        faer::Col::from_fn(self.dim(), |i| self.get(i))
     }
     /// The components as a `Vec` (for output and tests).
     fn to_vec(&self) -> Vec<f64> {
         (0..self.dim()).map(|i| self.get(i)).collect()
     }
-    /// Builds a vector from a faer column.
-    fn from_col(c: &Col<f64>) -> Self {
+    /// Builds a vector from a faer column (feature `faer`).
+    #[cfg(feature = "faer")]
+    fn from_col(c: &faer::Col<f64>) -> Self {
         Self::from_fn(c.nrows(), |i| c[i])
     }
 }
@@ -143,9 +146,10 @@ impl<const N: usize> Vector for SVector<f64, N> {
     }
 }
 
-impl Vector for Col<f64> {
+#[cfg(feature = "faer")]
+impl Vector for faer::Col<f64> {
     fn zeros(dim: usize) -> Self {
-        Col::zeros(dim)
+        faer::Col::zeros(dim)
     }
     fn dim(&self) -> usize {
         self.nrows()
@@ -163,15 +167,15 @@ impl Vector for Col<f64> {
         self - other
     }
     fn scale(&self, s: f64) -> Self {
-        Col::from_fn(self.nrows(), |i| s * self[i])
+        faer::Col::from_fn(self.nrows(), |i| s * self[i])
     }
     fn dot(&self, other: &Self) -> f64 {
         (0..self.nrows()).map(|i| self[i] * other[i]).sum()
     }
-    fn to_col(&self) -> Col<f64> {
+    fn to_col(&self) -> faer::Col<f64> {
         self.clone()
     }
-    fn from_col(c: &Col<f64>) -> Self {
+    fn from_col(c: &faer::Col<f64>) -> Self {
         c.clone()
     }
 }

@@ -10,7 +10,7 @@ use faer::Mat;
 use integrators::dense_output::{DenseState, HermiteStep};
 use integrators::{Integrator, IntegratorError, MethodInfo};
 use lie_groups::{LieGroup, Vector};
-use nalgebra::SMatrix;
+use nalgebra::{DMatrix, SMatrix};
 
 /// One running simulation: the integrator, its system and its state.
 ///
@@ -111,6 +111,21 @@ impl<const R: usize, const C: usize> Entries for SMatrix<f64, R, C> {
         for i in 0..R {
             for j in 0..C {
                 out[i * C + j] = self[(i, j)];
+            }
+        }
+    }
+}
+
+/// The composite groups' (products, powers) matrices.
+impl Entries for DMatrix<f64> {
+    fn side(&self) -> usize {
+        self.nrows()
+    }
+    fn write_row_major(&self, out: &mut [f64]) {
+        let c = self.ncols();
+        for i in 0..self.nrows() {
+            for j in 0..c {
+                out[i * c + j] = self[(i, j)];
             }
         }
     }

@@ -6,12 +6,11 @@
 //! path through the stack group `So3`) and the exact straight-line motion `x(t) = x₀ + t p/m`,
 //! `p(t) = p₀` on ℝ³; the Casimir |Π|² is kept to round-off. The same for τ = Cayley.
 
-use faer::Mat;
 use integrators::derivative_check::check_derivatives;
 use integrators::{Integrator, LiePoisson, System};
 use lie_groups::{Cayley, DenseMatrix, ExpMap, LieGroup, Product, ProductAlgebra, Rn, So3, Tau};
 use mechanics::RigidBody;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{DMatrix, Matrix3, Vector3};
 
 type Body = Product<So3, Rn<3>>;
 type Mu = ProductAlgebra<So3, Rn<3>>;
@@ -32,9 +31,9 @@ impl System<Body> for BodyAndParticle {
     fn velocity(&self, mu: &Mu) -> Mu {
         Mu::new(self.body.velocity(&mu.a), mu.b / self.mass)
     }
-    fn hessian(&self, mu: &Mu) -> Mat<f64> {
-        let ib = self.body.hessian(&mu.a).to_mat();
-        Mat::from_fn(6, 6, |i, j| match (i < 3, j < 3) {
+    fn hessian(&self, mu: &Mu) -> DMatrix<f64> {
+        let ib = self.body.hessian(&mu.a);
+        DMatrix::from_fn(6, 6, |i, j| match (i < 3, j < 3) {
             (true, true) => ib[(i, j)],
             (false, false) if i == j => 1.0 / self.mass,
             _ => 0.0,

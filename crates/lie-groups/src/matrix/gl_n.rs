@@ -11,8 +11,8 @@
 //!   inverse scaling and squaring (`logm`), defined when g has no eigenvalue on the closed negative
 //!   real axis. The Cayley map and its tangents use the generic [`crate::matrix_path`].
 
-use crate::matrix::dense::{expm, norm1, try_inverse};
-use crate::matrix::logm::logm;
+use crate::matrix::dense::{expm, logm, norm1, try_inverse};
+use crate::matrix::so_n::{generator_columns, unit};
 use crate::{matrix_path, Action, CayleyGroup, LieError, LieGroup};
 use faer::linalg::solvers::DenseSolveCore;
 use faer::{Col, Mat, MatRef};
@@ -196,7 +196,22 @@ impl<const N: usize> CayleyGroup for GlN<N> {
 
 /// Linear action on ℝᴺ: `g · p = g p`.
 impl<const N: usize> Action<Col<f64>> for GlN<N> {
+    type PointJacobian = Mat<f64>;
+    type GroupJacobian = Mat<f64>;
     fn act(&self, p: &Col<f64>) -> Col<f64> {
         &self.m * p
+    }
+    /// `g`.
+    fn act_jacobian_point(&self, _p: &Col<f64>) -> Mat<f64> {
+        self.m.clone()
+    }
+    /// Column k: `g Ê_k p` (Ê_k the k-th basis matrix, row-major).
+    fn act_jacobian_left(&self, p: &Col<f64>) -> Mat<f64> {
+        generator_columns(N * N, |k| &self.m * (gl_hat(N, &unit(N * N, k)) * p))
+    }
+    /// Column k: `Ê_k (g p)`.
+    fn act_jacobian_right(&self, p: &Col<f64>) -> Mat<f64> {
+        let q = &self.m * p;
+        generator_columns(N * N, |k| gl_hat(N, &unit(N * N, k)) * &q)
     }
 }

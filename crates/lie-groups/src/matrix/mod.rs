@@ -1,9 +1,8 @@
-//! Dense matrix functions on faer (inverse, exponential, logarithm) and the matrix groups of any
-//! size built on them: SO(n) and GL(n).
+//! The matrix groups of any size on faer, SO(n) and GL(n) (feature `faer`), with the dense
+//! functions on faer matrices they are built on.
 
 pub mod dense;
 pub mod gl_n;
-pub mod logm;
 pub mod so_n;
 
 pub use gl_n::GlN;

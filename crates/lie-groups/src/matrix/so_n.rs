@@ -13,8 +13,7 @@
 //!   of `R + Rᵀ` (see [`SoN::log`]), which stays exact at rotation angle π where the square-root
 //!   iteration of `logm` breaks down.
 
-use crate::matrix::dense::{expm, max_abs_diff};
-use crate::matrix::logm::logm;
+use crate::matrix::dense::{expm, logm, max_abs_diff};
 use crate::{matrix_path, Action, CayleyGroup, DomainReason, LieError, LieGroup};
 use core::f64::consts::PI;
 use faer::linalg::solvers::{DenseSolveCore, Solve};
@@ -485,7 +484,36 @@ impl<const N: usize> CayleyGroup for SoN<N> {
 
 /// Rotation of points of ℝᴺ: `g · p = R p`.
 impl<const N: usize> Action<Col<f64>> for SoN<N> {
+    type PointJacobian = Mat<f64>;
+    type GroupJacobian = Mat<f64>;
     fn act(&self, p: &Col<f64>) -> Col<f64> {
         &self.m * p
     }
+    /// `R`.
+    fn act_jacobian_point(&self, _p: &Col<f64>) -> Mat<f64> {
+        self.m.clone()
+    }
+    /// Column k: `R Ê_k p` (Ê_k the k-th basis generator).
+    fn act_jacobian_left(&self, p: &Col<f64>) -> Mat<f64> {
+        generator_columns(Self::DIM, |k| {
+            &self.m * (so_hat(N, &unit(Self::DIM, k)) * p)
+        })
+    }
+    /// Column k: `Ê_k (R p)`.
+    fn act_jacobian_right(&self, p: &Col<f64>) -> Mat<f64> {
+        let q = &self.m * p;
+        generator_columns(Self::DIM, |k| so_hat(N, &unit(Self::DIM, k)) * &q)
+    }
+}
+
+/// The unit vector e_k of ℝᵈ.
+pub(crate) fn unit(d: usize, k: usize) -> Col<f64> {
+    Col::from_fn(d, |i| if i == k { 1.0 } else { 0.0 })
+}
+
+/// The matrix whose k-th column (k < d) is `col(k)`.
+pub(crate) fn generator_columns(d: usize, col: impl Fn(usize) -> Col<f64>) -> Mat<f64> {
+    let cols: Vec<Col<f64>> = (0..d).map(col).collect();
+    let rows = cols.first().map_or(0, |c| c.nrows());
+    Mat::from_fn(rows, d, |i, k| cols[k][i])
 }

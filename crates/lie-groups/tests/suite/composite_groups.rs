@@ -9,13 +9,13 @@
 //!   power. ℝⁿ's maps against their closed forms (exp = identity, Ad = I, ad = 0).
 //! - Coordinates concatenate; refused matrices give the named error.
 
-use faer::Mat;
 use lie_groups::testing::proptest::prelude::*;
 use lie_groups::testing::{algebra, assert_small};
 use lie_groups::{
     Cayley, CayleyGroup, DenseMatrix, ExpMap, LieError, LieGroup, Power, PowerAlgebra, Product,
     ProductAlgebra, Rn, Se2, So3, StructureCheck, Tau, Vector,
 };
+use nalgebra::DMatrix as Mat;
 use nalgebra::{Matrix3, Vector2, Vector3};
 
 type So3R3 = Product<So3, Rn<3>>;
@@ -126,57 +126,57 @@ fn check_product_factorwise<G: CayleyGroup, H: CayleyGroup>(
     let ops = [
         (
             "Ad",
-            p.adjoint().to_mat(),
-            g.adjoint().to_mat(),
-            h.adjoint().to_mat(),
+            p.adjoint().to_dmatrix(),
+            g.adjoint().to_dmatrix(),
+            h.adjoint().to_dmatrix(),
         ),
         (
             "ad",
             P::<G, H>::ad(xi),
-            G::ad(a).to_mat(),
-            H::ad(b).to_mat(),
+            G::ad(a).to_dmatrix(),
+            H::ad(b).to_dmatrix(),
         ),
         (
             "d^L exp",
             P::<G, H>::dexp_left(xi),
-            G::dexp_left(a).to_mat(),
-            H::dexp_left(b).to_mat(),
+            G::dexp_left(a).to_dmatrix(),
+            H::dexp_left(b).to_dmatrix(),
         ),
         (
             "(d^L exp)⁻¹",
             P::<G, H>::dexp_left_inv(xi),
-            G::dexp_left_inv(a).to_mat(),
-            H::dexp_left_inv(b).to_mat(),
+            G::dexp_left_inv(a).to_dmatrix(),
+            H::dexp_left_inv(b).to_dmatrix(),
         ),
         (
             "d^L cay",
             P::<G, H>::dcay_left(xi),
-            G::dcay_left(a).to_mat(),
-            H::dcay_left(b).to_mat(),
+            G::dcay_left(a).to_dmatrix(),
+            H::dcay_left(b).to_dmatrix(),
         ),
         (
             "(d^L cay)⁻¹",
             P::<G, H>::dcay_left_inv(xi),
-            G::dcay_left_inv(a).to_mat(),
-            H::dcay_left_inv(b).to_mat(),
+            G::dcay_left_inv(a).to_dmatrix(),
+            H::dcay_left_inv(b).to_dmatrix(),
         ),
         (
             "M(μ) = ad*_(·) μ",
             P::<G, H>::ad_dual_operator(mu),
-            G::ad_dual_operator(&mu.a).to_mat(),
-            H::ad_dual_operator(&mu.b).to_mat(),
+            G::ad_dual_operator(&mu.a).to_dmatrix(),
+            H::ad_dual_operator(&mu.b).to_dmatrix(),
         ),
         (
             "D exp(ξ; μ)",
             P::<G, H>::dexp_left_dual_derivative(xi, mu),
-            G::dexp_left_dual_derivative(a, &mu.a).to_mat(),
-            H::dexp_left_dual_derivative(b, &mu.b).to_mat(),
+            G::dexp_left_dual_derivative(a, &mu.a).to_dmatrix(),
+            H::dexp_left_dual_derivative(b, &mu.b).to_dmatrix(),
         ),
         (
             "D cay(ξ; μ)",
             P::<G, H>::dcay_left_dual_derivative(xi, mu),
-            G::dcay_left_dual_derivative(a, &mu.a).to_mat(),
-            H::dcay_left_dual_derivative(b, &mu.b).to_mat(),
+            G::dcay_left_dual_derivative(a, &mu.a).to_dmatrix(),
+            H::dcay_left_dual_derivative(b, &mu.b).to_dmatrix(),
         ),
     ];
     for (what, m, ma, mb) in ops {
@@ -185,13 +185,13 @@ fn check_product_factorwise<G: CayleyGroup, H: CayleyGroup>(
     assert_block_diagonal(
         "hat",
         &P::<G, H>::hat(xi),
-        &[G::hat(a).to_mat(), H::hat(b).to_mat()],
+        &[G::hat(a).to_dmatrix(), H::hat(b).to_dmatrix()],
         0.0,
     );
     assert_block_diagonal(
         "matrix",
         &p.matrix(),
-        &[g.matrix().to_mat(), h.matrix().to_mat()],
+        &[g.matrix().to_dmatrix(), h.matrix().to_dmatrix()],
         tol,
     );
     // the vector maps of a step, factor by factor
@@ -332,43 +332,43 @@ fn check_power_factorwise<G: CayleyGroup, const N: usize>(
     assert_block_diagonal(
         "Ad",
         &p.adjoint(),
-        &blocks(&|k| p.parts[k].adjoint().to_mat()),
+        &blocks(&|k| p.parts[k].adjoint().to_dmatrix()),
         tol,
     );
     assert_block_diagonal(
         "ad",
         &Power::<G, N>::ad(xi),
-        &blocks(&|k| G::ad(&xi.parts[k]).to_mat()),
+        &blocks(&|k| G::ad(&xi.parts[k]).to_dmatrix()),
         tol,
     );
     assert_block_diagonal(
         "d^L exp",
         &Power::<G, N>::dexp_left(xi),
-        &blocks(&|k| G::dexp_left(&xi.parts[k]).to_mat()),
+        &blocks(&|k| G::dexp_left(&xi.parts[k]).to_dmatrix()),
         tol,
     );
     assert_block_diagonal(
         "(d^L exp)⁻¹",
         &Power::<G, N>::dexp_left_inv(xi),
-        &blocks(&|k| G::dexp_left_inv(&xi.parts[k]).to_mat()),
+        &blocks(&|k| G::dexp_left_inv(&xi.parts[k]).to_dmatrix()),
         tol,
     );
     assert_block_diagonal(
         "d^L cay",
         &Power::<G, N>::dcay_left(xi),
-        &blocks(&|k| G::dcay_left(&xi.parts[k]).to_mat()),
+        &blocks(&|k| G::dcay_left(&xi.parts[k]).to_dmatrix()),
         tol,
     );
     assert_block_diagonal(
         "D exp(ξ; μ)",
         &Power::<G, N>::dexp_left_dual_derivative(xi, mu),
-        &blocks(&|k| G::dexp_left_dual_derivative(&xi.parts[k], &mu.parts[k]).to_mat()),
+        &blocks(&|k| G::dexp_left_dual_derivative(&xi.parts[k], &mu.parts[k]).to_dmatrix()),
         tol,
     );
     assert_block_diagonal(
         "matrix",
         &p.matrix(),
-        &blocks(&|k| p.parts[k].matrix().to_mat()),
+        &blocks(&|k| p.parts[k].matrix().to_dmatrix()),
         tol,
     );
 }
@@ -435,6 +435,7 @@ fn coordinates_concatenate_factor_by_factor() {
     }
     assert_eq!(z, v);
     assert_eq!(v.dot(&v), 55.0);
+    #[cfg(feature = "faer")]
     assert_eq!(ProductAlgebra::<Se2, Rn<2>>::from_col(&v.to_col()), v);
     let w = PowerAlgebra::<So3, 2>::new([Vector3::new(1.0, 2.0, 3.0), Vector3::new(4.0, 5.0, 6.0)]);
     assert_eq!(w.to_vec(), vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);

@@ -48,3 +48,29 @@ fn cayley_translation_solves_the_matrix_cayley_equation() {
     let id = nalgebra::Matrix4::identity();
     assert!(((id - h) * c - (id + h)).amax() < 1e-14);
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(24))]
+
+    /// ⊕/⊖ inverse to each other, between, interpolation at constant speed, and every Jacobian
+    /// against finite differences, for rigid motions whose rotation angle is π − 10⁻² or
+    /// π − 10⁻³ and whose translation part is random (see the SO(3) test of the same name).
+    #[test]
+    fn operations_and_jacobians_hold_near_pi(
+        u in lie_groups::testing::algebra::<Se3>(1.0),
+        v in lie_groups::testing::algebra::<Se3>(1.0),
+        w in lie_groups::testing::algebra::<Se3>(1.0),
+    ) {
+        for delta in [1e-2, 1e-3] {
+            let r = core::f64::consts::PI - delta;
+            let near_pi = |x: &Vector6<f64>| {
+                let axis = x.fixed_rows::<3>(0).try_normalize(1e-3).unwrap_or_else(Vector3::x);
+                let (w, v) = (axis * r, x.fixed_rows::<3>(3).into_owned());
+                Vector6::new(w.x, w.y, w.z, v.x, v.y, v.z)
+            };
+            let (a, b, c) = (near_pi(&u), near_pi(&v), near_pi(&w));
+            lie_groups::testing::check_plus_minus_between_interpolate::<Se3>(&a, &b, &c);
+            lie_groups::testing::check_jacobians::<Se3>(&a, &b, &c);
+        }
+    }
+}

@@ -36,11 +36,10 @@
 //! **Splitting.** The bodies' own pieces (for free bodies [`super::RigidBodySe3`]'s two each, 2N
 //! in all), each flowing one body alone; the springs (and the bodies' potentials) are the kick.
 
-use faer::Mat;
 use integrators::splitting::SplitSystem;
 use integrators::{IntegratorError, System};
-use lie_groups::{DenseMatrix, Power, PowerAlgebra, Se3, Vector};
-use nalgebra::{Vector3, Vector6};
+use lie_groups::{Power, PowerAlgebra, Se3, Vector};
+use nalgebra::{DMatrix, Matrix6, Vector3, Vector6};
 
 use super::RigidBodySe3;
 
@@ -185,10 +184,10 @@ impl<S: System<Se3>, const N: usize> System<Power<Se3, N>> for CoupledBodies<S, 
         PowerAlgebra::from_parts_fn(|k| self.bodies[k].velocity(&mu.parts[k]))
     }
     /// `diag(∂²h_k/∂μ_k²)`.
-    fn hessian(&self, mu: &PowerAlgebra<Se3, N>) -> Mat<f64> {
-        let blocks: [Mat<f64>; N] =
-            core::array::from_fn(|k| self.bodies[k].hessian(&mu.parts[k]).to_mat());
-        Mat::from_fn(6 * N, 6 * N, |r, c| {
+    fn hessian(&self, mu: &PowerAlgebra<Se3, N>) -> DMatrix<f64> {
+        let blocks: [Matrix6<f64>; N] =
+            core::array::from_fn(|k| self.bodies[k].hessian(&mu.parts[k]));
+        DMatrix::from_fn(6 * N, 6 * N, |r, c| {
             if r / 6 == c / 6 {
                 blocks[r / 6][(r % 6, c % 6)]
             } else {

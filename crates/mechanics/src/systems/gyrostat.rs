@@ -49,12 +49,11 @@
 //! `(ωᵢ bᵢ, −Aᵀωᵢbᵢ)`, `ωᵢ = bᵢ·(Π − Ap)/Iᵢ`), the last spins the wheels at `J⁻¹p`; wheel
 //! torques are kicks (exact: they do not read ξ).
 
-use faer::Mat;
 use integrators::forces::{BodyInputMap, ControlInput, Schedule};
 use integrators::splitting::SplitSystem;
 use integrators::{IntegratorError, System};
 use lie_groups::{Product, ProductAlgebra, Rn, So3};
-use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
+use nalgebra::{DMatrix, Matrix3, SMatrix, SVector, Vector3};
 
 use super::RigidBody;
 
@@ -189,12 +188,12 @@ impl<const K: usize> System<GyrostatGroup<K>> for Gyrostat<K> {
         ProductAlgebra::new(omega, rates)
     }
     /// `[[S, −SA], [−AᵀS, J⁻¹ + AᵀSA]]`, S = 𝕀_s⁻¹.
-    fn hessian(&self, _mu: &GyrostatAlgebra<K>) -> Mat<f64> {
+    fn hessian(&self, _mu: &GyrostatAlgebra<K>) -> DMatrix<f64> {
         let s = self.body.hessian(&Vector3::zeros());
         let sa = s * self.axes;
         let wheels = self.axes.tr_mul(&sa)
             + SMatrix::<f64, K, K>::from_diagonal(&self.wheel_inertia.map(|j| 1.0 / j));
-        Mat::from_fn(3 + K, 3 + K, |i, j| match (i < 3, j < 3) {
+        DMatrix::from_fn(3 + K, 3 + K, |i, j| match (i < 3, j < 3) {
             (true, true) => s[(i, j)],
             (true, false) => -sa[(i, j - 3)],
             (false, true) => -sa[(j, i - 3)],
