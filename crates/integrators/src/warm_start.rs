@@ -35,7 +35,7 @@
 //! step to the next (a plain run uses one slot). The extrapolation of a slot also needs its samples
 //! equally spaced in time (to 10⁻³ relative): the two stages of a palindromic scheme that share a
 //! size (γ₁ = γₛ) alternate their spacings, and their slot keeps only its matrix. Where the
-//! Newton matrix is dense (a product group such as the gyrostat's SO(3) × ℝ³, a faer matrix),
+//! Newton matrix is dense (a product group such as the gyrostat's SO(3) × ℝ³, a heap matrix),
 //! re-assembling it at every stage would cost several plain steps per stage. The slot of the
 //! current size is kept apart from the parked ones, so a plain run pays nothing for the others. A reset or a
 //! new solver configuration starts afresh. The warm start changes only where the iteration starts:
