@@ -8,7 +8,7 @@
 
 use integrators::derivative_check::check_derivatives;
 use integrators::{Integrator, LiePoisson, System};
-use lie_groups::{Cayley, DenseMatrix, ExpMap, LieGroup, Product, ProductAlgebra, Rn, So3, Tau};
+use lie_groups::{Cayley, ExpMap, LieGroup, Product, ProductAlgebra, Rn, So3, Tau};
 use mechanics::RigidBody;
 use nalgebra::{DMatrix, Matrix3, Vector3};
 
