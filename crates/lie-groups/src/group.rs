@@ -206,7 +206,7 @@ pub trait LieGroup: Clone + Debug + Send + Sync + 'static {
 
     // ---- The vocabulary of estimation and control (⊕, ⊖, between, interpolation) and the
     // ---- Jacobians of every operation, by trivialization. See the crate page for the table of
-    // ---- manif / Sophus / jaxlie names.
+    // ---- manif / Sophus names.
 
     /// `g ⊕ ξ = g exp(ξ)`: moves g by ξ in its body frame (the increment is left-trivialized:
     /// `g⁻¹ (d/ds) (g exp(sξ))|₀ = ξ`). manif's right-plus `rplus`, jaxlie's `manifold.rplus`, the

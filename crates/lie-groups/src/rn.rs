@@ -10,8 +10,8 @@
 //!   `e^{ξ̂} = I + ξ̂` and the Cayley map `(I − ξ̂/2)⁻¹(I + ξ̂/2) = (I + ξ̂/2)² = I + ξ̂` equal the
 //!   identity map too, so `Rn` is a [`CayleyGroup`] with `cay = exp`.
 //!
-//! The matrix is a nalgebra [`DMatrix`] (a stack `SMatrix<N + 1, N + 1>` is not expressible for a generic
-//! `N` on stable Rust); it only serves `hat`, `matrix` and the generic matrix path, never a step of
+//! The matrix is a nalgebra [`DMatrix`] (a stack `SMatrix<N + 1, N + 1>` is not expressible for a
+//! generic `N` on stable Rust); it only serves `hat`, `matrix` and the generic matrix path, never a step of
 //! an integrator, which works on the stack vector alone.
 
 use crate::{CayleyGroup, LieError, LieGroup, StructureCheck};
