@@ -129,8 +129,10 @@ enum Command {
     /// maximum relative energy, Casimir and spatial momentum-map errors over the run.
     ///
     /// The reference, made independently of every method in the table: the exact flow on the free
-    /// rigid body without forces; elsewhere Gragg–Bulirsch–Stoer extrapolation (order 12) at
-    /// h = 1/ω, 1/(2ω), … until two successive runs agree to --reference-tolerance, within
+    /// rigid body without forces; elsewhere Gragg–Bulirsch–Stoer extrapolation (order 12) on the
+    /// steps of an error-controlled RKMK DOP853 run (short where the motion is fast, landing on the
+    /// force schedules' knots), then on them split in 2, 4, … until two successive runs agree to
+    /// --reference-tolerance, within
     /// --reference-budget (if not, one line says so and the trade goes on with the agreement
     /// reached); or your own with --reference. Its estimated error (the spread of its runs at its
     /// step and at twice it, plus 2ε(1 + ωT) for the rounding of the scene's data) is printed and

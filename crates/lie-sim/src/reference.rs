@@ -6,22 +6,30 @@
 //!   (n = max(8, ⌈T/h₀⌉), h₀ below), whose spread is its estimated error: what rounding leaves,
 //!   ~1e-15 … 1e-14.
 //! - **Every other scene:** the Gragg–Bulirsch–Stoer method of order 12
-//!   ([`integrators::GraggBulirschStoer`]; it shares no discretization with any candidate) at
-//!   h₀ = min(T, 1/ω) (ω the scene's time scale, [`crate::build::characteristic_rate`]; the
-//!   scene's step when ω = 0), h₀/2, h₀/4, …, every run ending its steps on the knots of the force
-//!   schedules (torque, force, thrust, wheel torques: where the force has kinks), until two
-//!   successive runs agree to the tolerance (`--reference-tolerance`, default [`DEFAULT_TOLERANCE`]
-//!   relative, in the trade's error measure `crate::trade::FinalState::error`). Refinement stops
+//!   ([`integrators::GraggBulirschStoer`]; it shares no discretization with any candidate) on a
+//!   mesh that follows the motion: the accepted steps of [`RkmkDop853`] under [`Adaptive`] at
+//!   rtol = [`MESH_TOLERANCE`], which land on the knots of the force schedules (torque, force,
+//!   thrust, wheel torques: where the force has kinks) and on T. The mesh only places the steps
+//!   (short at a periapsis passage or a flip, long in the slow phases); the accuracy comes from
+//!   the order-12 extrapolation on it, run on the mesh, then with every step split in 2, 4, …,
+//!   until two successive runs agree to the tolerance (`--reference-tolerance`, default
+//!   [`DEFAULT_TOLERANCE`] relative, in the trade's error measure
+//!   `crate::trade::FinalState::error`). A uniform step, as before, is set by the fastest phase:
+//!   on a satellite on an orbit of eccentricity 0.8 it stalled at an estimated 1e-4 within the
+//!   budget, where the mesh reaches the rounding level in well under a second
+//!   (`examples/scenes/eccentric-orbit.toml`); on the smooth scenes both cost alike and agree
+//!   within their estimated errors. Refinement stops
 //!   early when it stalls at the rounding level (two successive refinements each reduce the
 //!   difference by less than [`STALL_RATIO`], once it is below [`STALL_GATE`]), and when
 //!   `--reference-budget` (default [`DEFAULT_BUDGET`]) has run out: the first two runs always
 //!   complete, a later run is abandoned at the deadline. The finer run of the closest-agreeing pair
-//!   is then run again [`EXTRA_SAMPLES`] times with 1, 2 more steps (the same accuracy, roundings
-//!   that fall differently): the reference is the mean of these runs, and the spread of them and the
-//!   run at twice the step (the largest difference between two) bounds both the truncation error (at
-//!   order 12 the finer run's is ~2¹² times below the difference) and the rounding error of the mean.
-//!   Two runs alone can agree by chance far better than either is accurate (the heavy top over T = 2:
-//!   6.7e-16 between h and h/2, 3.7e-14 between runs of 160 and 162 steps).
+//!   is then run again [`EXTRA_SAMPLES`] times with 1, 2 more steps in its longest step (the same
+//!   accuracy, roundings that fall differently): the reference is the mean of these runs, and the
+//!   spread of them and the run at twice the step (the largest difference between two) bounds both
+//!   the truncation error (at order 12 the finer run's is ~2¹² times below the difference) and the
+//!   rounding error of the mean. Two runs alone can agree by chance far better than either is
+//!   accurate (the heavy top over T = 2: 6.7e-16 between h and h/2, 3.7e-14 between runs of 160
+//!   and 162 steps).
 //!
 //! To either estimate [`data_rounding`] is added: what rounding the scene's data (inertia,
 //! masses) does to every run alike, which no comparison of runs can see. When the estimate is
@@ -43,6 +51,7 @@ use crate::model::{Alg, Job, Model};
 use crate::scene::Scene;
 use crate::sim::Entries;
 use crate::systems::System;
+use integrators::adaptive::{Adaptive, RkmkDop853, Tolerance};
 use integrators::{GraggBulirschStoer, Integrator, IntegratorError};
 use lie_groups::{LieGroup, Vector};
 use std::fmt::Write as _;
@@ -161,7 +170,17 @@ pub fn reference(scene: &Scene, options: &Options) -> Result<Reference, SimError
     if matches!(scene.system, System::FreeRigidBody(_)) && scene.system.forces().is_none() {
         return exact_free_body(scene, h0, data, options.tolerance);
     }
-    refined(scene, h0, data, options)
+    let start = Instant::now();
+    let breaks = breakpoints(scene);
+    let grid = mesh(scene, &breaks)?;
+    let base = Base {
+        label: format!(
+            "the {} steps of rkmk-dop853 at rtol = {MESH_TOLERANCE:.0e}",
+            grid.len()
+        ),
+        grid,
+    };
+    refined(scene, &base, breaks.len(), data, options, start)
 }
 
 /// The scene's time scale ω ([`crate::build::characteristic_rate`] at its initial state; 0 at
@@ -285,41 +304,6 @@ fn breakpoints(scene: &Scene) -> Vec<f64> {
     v
 }
 
-/// The steps of a run at step ≤ h: each segment between consecutive breakpoints (and 0, T) in
-/// equal steps no longer than h, as (length of a step, count).
-fn grid(duration: f64, h: f64, breaks: &[f64]) -> Vec<(f64, u64)> {
-    grid_with_extra(duration, h, breaks, 0)
-}
-
-/// [`grid`] with `extra` more steps in its longest segment: a run of the same accuracy whose
-/// roundings fall differently.
-fn grid_with_extra(duration: f64, h: f64, breaks: &[f64], extra: u64) -> Vec<(f64, u64)> {
-    let ends: Vec<f64> = breaks
-        .iter()
-        .copied()
-        .chain(std::iter::once(duration))
-        .collect();
-    let lengths: Vec<f64> = ends
-        .iter()
-        .scan(0.0, |start, &end| {
-            let len = end - *start;
-            *start = end;
-            Some(len)
-        })
-        .collect();
-    let longest = (0..lengths.len())
-        .max_by(|&a, &b| lengths[a].total_cmp(&lengths[b]))
-        .unwrap_or(0);
-    lengths
-        .iter()
-        .enumerate()
-        .map(|(i, &len)| {
-            let n = (len / h).ceil().max(1.0) as u64 + if i == longest { extra } else { 0 };
-            (len / n as f64, n)
-        })
-        .collect()
-}
-
 /// What one run of the refinement gave.
 enum Outcome {
     /// The state at T (with the energy and Casimir there).
@@ -370,54 +354,187 @@ impl Job for GbsRun<'_> {
                 k += 1;
             }
         }
-        let state = FinalState {
-            momentum: m.momentum().to_vec(),
-            group: m.configuration().map(|g| {
-                let matrix = g.matrix();
-                let side = matrix.side();
-                let mut entries = vec![0.0; side * side];
-                matrix.write_row_major(&mut entries);
-                entries
-            }),
-        };
-        Ok(Ok(Outcome::Done(state, m.energy(), m.casimir())))
+        Ok(Ok(Outcome::Done(final_state(&m), m.energy(), m.casimir())))
     }
+}
+
+/// The state of a method as the trade compares it: μ, and g's matrix entries row by row.
+fn final_state<I: Integrator<Group: crate::sim::SimGroup>>(m: &I) -> FinalState {
+    FinalState {
+        momentum: m.momentum().to_vec(),
+        group: m.configuration().map(|g| {
+            let matrix = g.matrix();
+            let side = matrix.side();
+            let mut entries = vec![0.0; side * side];
+            matrix.write_row_major(&mut entries);
+            entries
+        }),
+    }
+}
+
+/// The [`Job`] that runs [`RkmkDop853`] under [`Adaptive`] at `tolerance`, its steps landing on
+/// each of `ends` (the force schedules' knots, then T) in turn, and returns the lengths of its
+/// accepted steps: the mesh of the reference's refinement.
+struct MeshRun<'a> {
+    ends: &'a [f64],
+    tolerance: Tolerance,
+}
+
+impl Job for MeshRun<'_> {
+    type Out = Result<Vec<f64>, (u64, f64, IntegratorError)>;
+    fn run<M: Model>(
+        self,
+        model: &M,
+        mu0: Alg<M::G>,
+        g0: Option<M::G>,
+    ) -> Result<Self::Out, SimError> {
+        let method = RkmkDop853::new(model.system().clone(), mu0, g0).map_err(|e| {
+            SimError::Build {
+                what: format!("the reference's mesh (rkmk-dop853) of {}", model.kind()),
+                message: e.to_string(),
+            }
+        })?;
+        let mut run = Adaptive::new(method, self.tolerance).with_max_steps(MESH_MAX_STEPS);
+        let mut steps = Vec::new();
+        for &end in self.ends {
+            while run.method().time() != end {
+                let t = run.method().time();
+                if let Err(e) = run.step_towards(end) {
+                    return Ok(Err((steps.len() as u64, t, e)));
+                }
+                steps.push(run.method().time() - t);
+            }
+        }
+        Ok(Ok(steps))
+    }
+}
+
+/// The tolerance (rtol; atol the same in the units of μ) of the run whose steps are the mesh of the
+/// refinement: loose, the mesh only has to follow the motion's time scales; the accuracy comes
+/// from the order-12 extrapolation on it and from halving it.
+pub const MESH_TOLERANCE: f64 = 1e-6;
+
+/// The most steps (accepted and rejected) of the run that makes the mesh.
+pub const MESH_MAX_STEPS: usize = 10_000_000;
+
+/// The mesh of the refinement: the steps of [`RkmkDop853`] under [`Adaptive`] at
+/// [`MESH_TOLERANCE`], landing on `breaks` and T, as a grid of (step, 1).
+fn mesh(scene: &Scene, breaks: &[f64]) -> Result<Vec<(f64, u64)>, SimError> {
+    let ends: Vec<f64> = breaks
+        .iter()
+        .copied()
+        .chain(std::iter::once(scene.duration))
+        .collect();
+    // atol in the units of μ: the trade measures μ relative to its largest component.
+    let mu_scale = match scene.system.dispatch(scene.reconstruct, InitialMomentum)? {
+        m if m > 0.0 && m.is_finite() => m.min(1.0),
+        _ => 1.0,
+    };
+    let tolerance = Tolerance::new(MESH_TOLERANCE, MESH_TOLERANCE * mu_scale).map_err(|e| {
+        SimError::Build {
+            what: "the reference's mesh (rkmk-dop853)".into(),
+            message: e.to_string(),
+        }
+    })?;
+    match scene.system.dispatch(scene.reconstruct, MeshRun { ends: &ends, tolerance })? {
+        Ok(steps) => Ok(steps.into_iter().map(|h| (h, 1)).collect()),
+        Err((step, time, e)) => Err(SimError::Step {
+            step,
+            time,
+            message: format!(
+                "the reference's mesh (rkmk-dop853 at rtol = {MESH_TOLERANCE:.0e}): {e}"
+            ),
+        }),
+    }
+}
+
+/// The [`Job`] that reads the largest component of μ₀ in max norm.
+struct InitialMomentum;
+
+impl Job for InitialMomentum {
+    type Out = f64;
+    fn run<M: Model>(self, _: &M, mu0: Alg<M::G>, _: Option<M::G>) -> Result<f64, SimError> {
+        Ok(mu0.norm_max())
+    }
+}
+
+/// `base` with each segment's steps split in `2^level`.
+fn refine(base: &[(f64, u64)], level: u32) -> Vec<(f64, u64)> {
+    let k = 1u64 << level;
+    base.iter().map(|&(h, n)| (h / k as f64, n * k)).collect()
+}
+
+/// `grid` with `extra` more steps in its longest segment: a run of the same accuracy whose
+/// roundings fall differently.
+fn with_extra(grid: &[(f64, u64)], extra: u64) -> Vec<(f64, u64)> {
+    let longest = (0..grid.len())
+        .max_by(|&a, &b| (grid[a].0 * grid[a].1 as f64).total_cmp(&(grid[b].0 * grid[b].1 as f64)))
+        .unwrap_or(0);
+    grid.iter()
+        .enumerate()
+        .map(|(i, &(h, n))| {
+            if i == longest {
+                (h * n as f64 / (n + extra) as f64, n + extra)
+            } else {
+                (h, n)
+            }
+        })
+        .collect()
 }
 
 /// The number of extra runs at the reference's step (with 1, 2, … more steps) whose mean is the
 /// reference and whose spread enters its estimated error.
 pub const EXTRA_SAMPLES: u64 = 2;
 
-/// The Gragg–Bulirsch–Stoer refinement of the module page.
-fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Reference, SimError> {
-    let start = Instant::now();
-    let breaks = breakpoints(scene);
-    let run = |grid: &[(f64, u64)], deadline: Option<Instant>, h: f64| {
+/// The level-0 grid of the refinement and how to name it.
+struct Base {
+    /// Segments (step, count), ending on the knots and T.
+    grid: Vec<(f64, u64)>,
+    /// E.g. `h = 1.0e-1` or `the 412 steps of rkmk-dop853 at rtol = 1e-6`.
+    label: String,
+}
+
+/// The Gragg–Bulirsch–Stoer refinement of the module page on the grid `base`, its steps split in
+/// 1, 2, 4, … .
+fn refined(
+    scene: &Scene,
+    base: &Base,
+    knots: usize,
+    data: f64,
+    options: &Options,
+    start: Instant,
+) -> Result<Reference, SimError> {
+    let run = |grid: &[(f64, u64)], deadline: Option<Instant>, level: u32| {
         let job = GbsRun { grid, deadline };
         match scene.system.dispatch(scene.reconstruct, job)? {
             Err((step, time, e)) => Err(SimError::Step {
                 step,
                 time,
-                message: format!("the reference (gragg-bulirsch-stoer at h = {h:.3e}): {e}"),
+                message: format!(
+                    "the reference (gragg-bulirsch-stoer on {}, split in {}): {e}",
+                    base.label,
+                    1u64 << level
+                ),
             }),
             Ok(outcome) => Ok(outcome),
         }
     };
     let tolerance = options.tolerance;
-    // (h, steps, state, energy, Casimir) of each completed run, and the differences between
+    // (level, steps, state, energy, Casimir) of each completed run, and the differences between
     // successive runs.
-    let mut runs: Vec<(f64, u64, FinalState, f64, Option<f64>)> = Vec::new();
+    let mut runs: Vec<(u32, u64, FinalState, f64, Option<f64>)> = Vec::new();
     let mut diffs: Vec<f64> = Vec::new();
     let mut why_stopped: Option<String> = None;
-    let mut h = h0;
-    for _ in 0..=MAX_REFINEMENTS {
-        let grid = grid(scene.duration, h, &breaks);
+    for level in 0..=MAX_REFINEMENTS as u32 {
+        let grid = refine(&base.grid, level);
         let deadline = (runs.len() >= 2).then(|| start + options.budget);
-        match run(&grid, deadline, h)? {
+        match run(&grid, deadline, level)? {
             Outcome::OutOfTime => {
                 why_stopped = Some(format!(
-                    "--reference-budget {:?} ran out at h = {h:.3e}",
-                    options.budget
+                    "--reference-budget {:?} ran out at {} split in {}",
+                    options.budget,
+                    base.label,
+                    1u64 << level
                 ));
                 break;
             }
@@ -427,7 +544,7 @@ fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Refer
                 if let Some(prev) = runs.last() {
                     diffs.push(state.error(&prev.2));
                 }
-                runs.push((h, steps, state, energy, casimir));
+                runs.push((level, steps, state, energy, casimir));
                 let d = diffs.last().copied().unwrap_or(f64::INFINITY);
                 if d <= tolerance {
                     break;
@@ -447,7 +564,6 @@ fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Refer
                 }
             }
         }
-        h /= 2.0;
     }
     // The finer run of the closest-agreeing pair (the last one when the tolerance was met).
     let Some(index) = (0..diffs.len())
@@ -458,20 +574,18 @@ fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Refer
             step: 0,
             time: 0.0,
             message: format!(
-                "the reference: gragg-bulirsch-stoer did not complete two runs from h = {h0:.3e} \
-                 (every step left the domain of the exponential coordinates)"
+                "the reference: gragg-bulirsch-stoer did not complete two runs on {} and its \
+                 halvings (every step left the domain of the exponential coordinates)",
+                base.label
             ),
         });
     };
-    let (hf, steps, fine, energy, casimir) = runs[index].clone();
+    let (level, steps, fine, energy, casimir) = runs[index].clone();
+    let fine_grid = refine(&base.grid, level);
     // Runs of the same accuracy with 1, 2, … more steps: their roundings fall differently.
     let mut samples = vec![fine];
     for extra in 1..=EXTRA_SAMPLES {
-        if let Outcome::Done(state, ..) = run(
-            &grid_with_extra(scene.duration, hf, &breaks, extra),
-            None,
-            hf,
-        )? {
+        if let Outcome::Done(state, ..) = run(&with_extra(&fine_grid, extra), None, level)? {
             samples.push(state);
         }
     }
@@ -490,7 +604,7 @@ fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Refer
                      amplified by the scene over T)"
                         .to_string()
                 } else {
-                    format!("{MAX_REFINEMENTS} halvings of h were not enough")
+                    format!("{MAX_REFINEMENTS} halvings of the steps were not enough")
                 }
             })
         )
@@ -501,15 +615,16 @@ fn refined(scene: &Scene, h0: f64, data: f64, options: &Options) -> Result<Refer
         energy,
         casimir,
         description: format!(
-            "gragg-bulirsch-stoer (order {}), the mean of its runs at h = {hf:.3e} ({steps} \
-             steps{} and {EXTRA_SAMPLES} with 1, 2 more), refined from h = {h0:.3e}: with the run \
-             at twice the step they spread by {spread:.1e}, plus {data:.1e} for the data's \
-             rounding ({:.2} s)",
+            "gragg-bulirsch-stoer (order {}), the mean of its runs on {} split in {} ({steps} \
+             steps{} and {EXTRA_SAMPLES} with 1, 2 more): with the run at twice the step they \
+             spread by {spread:.1e}, plus {data:.1e} for the data's rounding ({:.2} s)",
             2 * GraggBulirschStoer::<lie_groups::So3, mechanics::systems::RigidBody>::DEFAULT_COLUMNS,
-            if breaks.is_empty() {
+            base.label,
+            1u64 << level,
+            if knots == 0 {
                 String::new()
             } else {
-                format!(", ending on the force schedules' {} knots", breaks.len())
+                format!(", ending on the force schedules' {knots} knots")
             },
             start.elapsed().as_secs_f64()
         ),
@@ -634,25 +749,48 @@ mod tests {
         Duration::from_secs(s.trim_end_matches('s').parse().unwrap())
     }
 
-    #[test]
-    fn the_grid_ends_its_segments_on_the_breakpoints() {
-        let g = grid(10.0, 0.3, &[5.0, 5.1]);
-        assert_eq!(g.len(), 3);
-        assert_eq!(g[0].1, 17); // ⌈5/0.3⌉
-        assert_eq!(g[1].1, 1);
-        assert_eq!(g[2].1, 17);
-        let ends: Vec<f64> = g
-            .iter()
-            .scan(0.0, |t, &(h, n)| {
-                *t += h * n as f64;
-                Some(*t)
-            })
-            .collect();
-        for (e, x) in ends.iter().zip([5.0, 5.1, 10.0]) {
-            assert!((e - x).abs() < 1e-14, "{ends:?}");
+    /// The ends of a grid's steps, in order.
+    fn ends(grid: &[(f64, u64)]) -> Vec<f64> {
+        let mut t = 0.0;
+        let mut v = Vec::new();
+        for &(h, n) in grid {
+            for _ in 0..n {
+                t += h;
+                v.push(t);
+            }
         }
-        assert!(g.iter().all(|&(h, _)| h <= 0.3));
-        assert_eq!(grid(1.0, 2.0, &[]), vec![(1.0, 1)]);
+        v
+    }
+
+    /// The mesh's steps end on every knot of the force schedules and on T (the detumbling scene's
+    /// torque kinks at 5 and 5.1), and stay there when split in 2ᵏ or given extra steps.
+    #[test]
+    fn the_mesh_ends_its_steps_on_the_breakpoints() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/scenes/detumbling-spacecraft.toml");
+        let overrides = crate::scene::Overrides {
+            duration: Some(8.0),
+            step: None,
+            stride: None,
+        };
+        let scene = Scene::load(&path, overrides).unwrap();
+        let breaks = breakpoints(&scene);
+        let base = mesh(&scene, &breaks).unwrap();
+        assert!(base.len() > 3, "{base:?}");
+        for grid in [
+            base.clone(),
+            refine(&base, 3),
+            with_extra(&refine(&base, 1), 2),
+        ] {
+            let e = ends(&grid);
+            for x in [5.0, 5.1, 8.0] {
+                let near = e.iter().map(|t| (t - x).abs()).fold(f64::INFINITY, f64::min);
+                assert!(near < 1e-13, "no step ends at {x}: {near:e}");
+            }
+            assert!((e.last().unwrap() - 8.0).abs() < 1e-13);
+        }
+        assert_eq!(refine(&[(0.5, 3)], 2), vec![(0.125, 12)]);
+        assert_eq!(with_extra(&[(0.1, 1), (1.0, 2)], 1), vec![(0.1, 1), (2.0 / 3.0, 3)]);
     }
 
     /// The detumbling scene's torque has knots at 0, 5 and 5.1: the reference's steps end on the

@@ -8,7 +8,8 @@
 //! to the system (their row needs a capability the system's model lacks) are left out, with the
 //! model's reason. Each run is compared at the final time T with a reference made independently of
 //! the candidates, with its estimated error ([`crate::reference`]: the exact flow on the free rigid
-//! body, elsewhere Gragg–Bulirsch–Stoer refined until two runs agree to `--reference-tolerance`, or
+//! body, elsewhere Gragg–Bulirsch–Stoer on the mesh of an error-controlled run, refined until two
+//! runs agree to `--reference-tolerance`, or
 //! the user's `--reference`). An error below the reference's estimated error (the floor) measures
 //! the reference, not the method: the table prints it as `unresolved`, the CSV leaves its `error`
 //! cell empty with `error_status` `unresolved`, and the plot draws it as ▽ on the floor line. The
