@@ -388,12 +388,11 @@ impl Job for MeshRun<'_> {
         mu0: Alg<M::G>,
         g0: Option<M::G>,
     ) -> Result<Self::Out, SimError> {
-        let method = RkmkDop853::new(model.system().clone(), mu0, g0).map_err(|e| {
-            SimError::Build {
+        let method =
+            RkmkDop853::new(model.system().clone(), mu0, g0).map_err(|e| SimError::Build {
                 what: format!("the reference's mesh (rkmk-dop853) of {}", model.kind()),
                 message: e.to_string(),
-            }
-        })?;
+            })?;
         let mut run = Adaptive::new(method, self.tolerance).with_max_steps(MESH_MAX_STEPS);
         let mut steps = Vec::new();
         for &end in self.ends {
@@ -430,13 +429,18 @@ fn mesh(scene: &Scene, breaks: &[f64]) -> Result<Vec<(f64, u64)>, SimError> {
         m if m > 0.0 && m.is_finite() => m.min(1.0),
         _ => 1.0,
     };
-    let tolerance = Tolerance::new(MESH_TOLERANCE, MESH_TOLERANCE * mu_scale).map_err(|e| {
-        SimError::Build {
+    let tolerance =
+        Tolerance::new(MESH_TOLERANCE, MESH_TOLERANCE * mu_scale).map_err(|e| SimError::Build {
             what: "the reference's mesh (rkmk-dop853)".into(),
             message: e.to_string(),
-        }
-    })?;
-    match scene.system.dispatch(scene.reconstruct, MeshRun { ends: &ends, tolerance })? {
+        })?;
+    match scene.system.dispatch(
+        scene.reconstruct,
+        MeshRun {
+            ends: &ends,
+            tolerance,
+        },
+    )? {
         Ok(steps) => Ok(steps.into_iter().map(|h| (h, 1)).collect()),
         Err((step, time, e)) => Err(SimError::Step {
             step,
@@ -784,13 +788,19 @@ mod tests {
         ] {
             let e = ends(&grid);
             for x in [5.0, 5.1, 8.0] {
-                let near = e.iter().map(|t| (t - x).abs()).fold(f64::INFINITY, f64::min);
+                let near = e
+                    .iter()
+                    .map(|t| (t - x).abs())
+                    .fold(f64::INFINITY, f64::min);
                 assert!(near < 1e-13, "no step ends at {x}: {near:e}");
             }
             assert!((e.last().unwrap() - 8.0).abs() < 1e-13);
         }
         assert_eq!(refine(&[(0.5, 3)], 2), vec![(0.125, 12)]);
-        assert_eq!(with_extra(&[(0.1, 1), (1.0, 2)], 1), vec![(0.1, 1), (2.0 / 3.0, 3)]);
+        assert_eq!(
+            with_extra(&[(0.1, 1), (1.0, 2)], 1),
+            vec![(0.1, 1), (2.0 / 3.0, 3)]
+        );
     }
 
     /// The detumbling scene's torque has knots at 0, 5 and 5.1: the reference's steps end on the

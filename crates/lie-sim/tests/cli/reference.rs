@@ -597,7 +597,10 @@ fn the_eccentric_orbit_has_its_stated_eccentricity_and_period() {
     assert_eq!(periapses.len(), 5, "{periapses:?}");
     for w in periapses.windows(2) {
         let period = w[1] - w[0];
-        assert!((period - 2.0 * std::f64::consts::PI).abs() < 1e-2, "{period}");
+        assert!(
+            (period - 2.0 * std::f64::consts::PI).abs() < 1e-2,
+            "{period}"
+        );
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
