@@ -741,6 +741,14 @@ pub fn all() -> Vec<Generator> {
             "coupled-bodies-run",
             "coupled-bodies",
         ),
+        vehicle!(
+            "trade-eccentric-orbit",
+            "docs/trade-eccentric-orbit.csv",
+            &["examples/scenes/eccentric-orbit.toml"],
+            "3 min",
+            "eccentric-orbit-run",
+            "eccentric-orbit",
+        ),
         Generator {
             name: "choose-examples",
             about: "`lie-sim choose` on the free body and the fast heavy top",
