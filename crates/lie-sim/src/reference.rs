@@ -314,7 +314,8 @@ enum Outcome {
     TooLarge,
 }
 
-/// The [`Job`] that runs [`GraggBulirschStoer`] over a grid (segments of equal steps, [`refine`]) on the scene's group and system.
+/// The [`Job`] that runs [`GraggBulirschStoer`] over a grid (segments of equal steps, [`refine`])
+/// on the scene's group and system.
 struct GbsRun<'a> {
     grid: &'a [(f64, u64)],
     deadline: Option<Instant>,
