@@ -12,7 +12,8 @@ use crate::format::{g, g3, micros};
 use std::collections::HashMap;
 use std::path::Path;
 
-/// The plain methods the structure-preserving ones are weighed against.
+/// The plain methods the structure-preserving ones are weighed against, for a CSV without the
+/// `geometric` column (written before lie-sim had it).
 pub const BASELINES: &[&str] = &["rk4", "rkmk4"];
 
 /// One row of the CSV, by column name (the CSV's column order may change).
@@ -44,8 +45,19 @@ impl Row {
         !self.get("failure").is_empty() || !self.seconds().is_finite()
     }
 
+    /// Not geometric, as the CSV's `geometric` column says (read by lie-sim from the method's
+    /// own descriptor); by name ([`BASELINES`]) in a CSV without it.
     pub fn is_baseline(&self) -> bool {
-        BASELINES.contains(&self.method())
+        match self.get("geometric") {
+            "false" => true,
+            "true" => false,
+            _ => BASELINES.contains(&self.method()),
+        }
+    }
+
+    /// The tolerance of a tolerance-driven run (`None` for a fixed step).
+    pub fn tolerance(&self) -> Option<f64> {
+        self.number("tolerance")
     }
 
     /// `method [composition] [τ = …] [θ = …], h = …` as the tables name a run.
@@ -61,7 +73,10 @@ impl Row {
                 parts.push(format!("{symbol} = {v}"));
             }
         }
-        format!("{}, h = {}", parts.join(" "), short(self.h()))
+        match self.tolerance() {
+            Some(t) => format!("{}, tolerance = {}", parts.join(" "), short(t)),
+            None => format!("{}, h = {}", parts.join(" "), short(self.h())),
+        }
     }
 
     /// Whether the run meets `target` in `metric` (a CSV column: `error`, `max_energy_error`, …).
@@ -175,6 +190,10 @@ pub fn summary(rows: &[Row], metric: &str, targets: &[f64], exclude: &[&str]) ->
 /// The families of the per-family table; a method no family names falls into the last.
 pub const FAMILIES: &[(&str, &[&str])] = &[
     ("RK4 / RKMK4", &["rk4", "rkmk4"]),
+    (
+        "to a tolerance: DOP853, Dormand–Prince",
+        &["dop853", "dopri5", "rkmk-dop853", "rkmk-dopri5"],
+    ),
     (
         "exact flow, kinetic–kick",
         &["exact", "kinetic-kick", "processed-kinetic-kick"],
@@ -324,7 +343,7 @@ euler-poincare,exp,1,-,0.4,0,NaN,NaN,,failed,1e-14,NaN,,,step 5: no convergence;
     fn families_and_tau_tables_read_the_same_rows() {
         let rows = parse(CSV).unwrap();
         let f = families(&rows, "error", &[1e-2]);
-        assert!(f.contains("| rk4, h = 0.4: 1.0 µs | exact, h = 10: 0.9 µs | none in the ladder | lie-poisson τ = cayley θ = 0.5, h = 0.4: 3.8 µs |"), "{f}");
+        assert!(f.contains("| rk4, h = 0.4: 1.0 µs | none in the ladder | exact, h = 10: 0.9 µs | none in the ladder | lie-poisson τ = cayley θ = 0.5, h = 0.4: 3.8 µs |"), "{f}");
         let t = tau(&rows, "0.5");
         assert!(
             t.contains("| 0.4 | 1.0e-3 | 4.0e-3 | 4 | 200.0 | 150.0 |"),

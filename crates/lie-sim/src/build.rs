@@ -7,8 +7,9 @@ use crate::methods::spec::SolverOptions;
 use crate::methods::wrap::BuildError;
 use crate::methods::{build as build_method, MethodSpec};
 use crate::model::{Alg, Job, Model};
-use crate::sim::{Adapter, Simulation};
+use crate::sim::{Adapter, PairSim, Simulation};
 use crate::systems::{System, SystemKind};
+use integrators::adaptive::Tolerance;
 use integrators::System as _;
 
 /// Builds the simulation a scene names: its system with its initial state (g₀ only when
@@ -21,12 +22,26 @@ pub fn build(
     reconstruct: bool,
     solver: &SolverOptions,
 ) -> Result<Box<dyn Simulation>, SimError> {
+    build_with(system, method, reconstruct, solver, None)
+}
+
+/// As [`build`], run to `tolerance` when one is given: the method's embedded pair driven by the
+/// library's controller ([`PairSim`]). A method without an error estimate refuses a tolerance
+/// ([`SimError::Build`]; a scene never names one, `crate::stepping`).
+pub fn build_with(
+    system: &System,
+    method: &MethodSpec,
+    reconstruct: bool,
+    solver: &SolverOptions,
+    tolerance: Option<Tolerance>,
+) -> Result<Box<dyn Simulation>, SimError> {
     system.dispatch(
         reconstruct,
         Single {
             system: system.kind(),
             method,
             solver,
+            tolerance,
         },
     )
 }
@@ -94,6 +109,7 @@ struct Single<'a> {
     system: SystemKind,
     method: &'a MethodSpec,
     solver: &'a SolverOptions,
+    tolerance: Option<Tolerance>,
 }
 
 impl Job for Single<'_> {
@@ -106,7 +122,20 @@ impl Job for Single<'_> {
     ) -> Result<Self::Out, SimError> {
         let integrator = build_method(self.method, &self.solver.config(), model, mu0, g0)
             .map_err(|e| refusal(self.system, self.method, e))?;
-        Ok(Box::new(Adapter::new(integrator, model.system().clone())))
+        let Some(tolerance) = self.tolerance else {
+            return Ok(Box::new(Adapter::new(integrator, model.system().clone())));
+        };
+        match integrator.into_pair() {
+            Ok(pair) => Ok(Box::new(PairSim::new(
+                pair,
+                model.system().clone(),
+                tolerance,
+            ))),
+            Err(_) => Err(SimError::Build {
+                what: format!("{} with {}", self.system, self.method),
+                message: "it has no error estimate to run to a tolerance".into(),
+            }),
+        }
     }
 }
 

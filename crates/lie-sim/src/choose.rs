@@ -16,18 +16,26 @@
 //!   twice the floor is refused, since no run could be shown to meet it; or
 //! - `energy`: the maximum relative energy error over the run (no reference needed),
 //!
-//! and the cost the stepping time of the whole run. The choice is the cheapest run meeting the
+//! and the cost the stepping time of the whole run.
+//!
+//! The tolerance-driven methods (the embedded pairs, `crate::trade::tolerance_driven`) run in the
+//! same breadth-first order over a ladder of tolerances instead of steps: 10 × target at the
+//! first level, then a tenth of it at each level (a pair's error at T is usually within a decade
+//! or two of its tolerance, on either side), down to the smallest `rtol` f64 allows. Their
+//! answer is a tolerance, written to the scene as `tolerance = …` in place of `step`. The choice is the cheapest run meeting the
 //! target, the runner-up the cheapest run of another method; both are reported with their cost
 //! and measured error. When nothing meets the target within the budget, it says so, with the best
 //! value reached.
 
-use crate::build::build;
+use crate::build::{build, build_with};
 use crate::error::SimError;
 use crate::invariants::relative_error;
-use crate::measure::timed_run;
+use crate::measure::{timed_adaptive_run, timed_run};
 use crate::methods::{candidates, MethodSpec};
 use crate::reference::{meets, reference, Options as ReferenceOptions};
 use crate::scene::{steps_for, Scene};
+use crate::trade::tolerance_driven;
+use integrators::adaptive::Tolerance;
 use std::time::{Duration, Instant};
 
 /// What is measured against the target.
@@ -44,12 +52,31 @@ pub enum Metric {
 pub struct Candidate {
     /// The method.
     pub method: MethodSpec,
-    /// Its step.
+    /// Its step (the duration T for a tolerance-driven run).
     pub h: f64,
+    /// The tolerance (rtol = atol) of a tolerance-driven run, `None` for fixed steps.
+    pub tolerance: Option<f64>,
     /// Stepping time of the whole run.
     pub seconds: f64,
     /// The measured value of the metric.
     pub value: f64,
+}
+
+impl Candidate {
+    /// `h = 0.01`, or `tolerance = 1e-8` for a tolerance-driven run.
+    pub fn setting(&self) -> String {
+        match self.tolerance {
+            Some(t) => format!("tolerance = {t:e}"),
+            None => format!("h = {}", self.h),
+        }
+    }
+}
+
+/// The tolerance a tolerance-driven method runs at on `level` (≥ 1) of the search for `target`:
+/// 10 × target at the first, a tenth of it at each next; `None` below what f64 delivers.
+fn tolerance_at(level: usize, target: f64) -> Option<f64> {
+    let t = target * 10f64.powi(2 - level as i32);
+    (t >= Tolerance::MIN_RTOL).then_some(t)
 }
 
 /// The outcome of [`choose`].
@@ -130,14 +157,36 @@ pub fn choose(
                 truncated = true;
                 break 'ladder;
             }
-            let mut sim = match build(&scene.system, m, scene.reconstruct, &scene.solver) {
+            let adaptive = tolerance_driven(m);
+            let tolerance = if adaptive {
+                let Some(t) = tolerance_at(level, target) else {
+                    done[k] = true;
+                    continue;
+                };
+                Some(t)
+            } else {
+                None
+            };
+            let built = build_with(
+                &scene.system,
+                m,
+                scene.reconstruct,
+                &scene.solver,
+                tolerance.and_then(|t| Tolerance::uniform(t).ok()),
+            );
+            let mut sim = match built {
                 Ok(s) => s,
                 Err(_) => {
                     done[k] = true; // not available or not applicable to this system
                     continue;
                 }
             };
-            let Ok(run) = timed_run(sim.as_mut(), scene.duration, h) else {
+            let run = if adaptive {
+                timed_adaptive_run(sim.as_mut(), scene.duration)
+            } else {
+                timed_run(sim.as_mut(), scene.duration, h)
+            };
+            let Ok(run) = run else {
                 done[k] = true; // a failed step: finer steps of a failing method are not tried
                 continue;
             };
@@ -153,7 +202,8 @@ pub fn choose(
             done[k] = met(value) || floor.is_some_and(|f| value < f);
             rows.push(Candidate {
                 method: m.clone(),
-                h,
+                h: if adaptive { scene.duration } else { h },
+                tolerance,
                 seconds: run.stepping.as_secs_f64(),
                 value,
             });
@@ -165,7 +215,7 @@ pub fn choose(
         // first) and dropped if a sample between the trade's missed a peak.
         rows.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
         for r in rows.iter_mut().filter(|r| met(r.value)) {
-            r.value = energy_error_every_step(scene, &r.method, r.h)?;
+            r.value = energy_error_every_step(scene, &r.method, r.h, r.tolerance)?;
         }
     }
     let cheapest = |exclude: Option<&MethodSpec>| {
@@ -197,16 +247,42 @@ pub fn choose(
     })
 }
 
-/// max_k |E_k − E₀|/|E₀| over every step of the scene run with `method` at step h (∞ if a step
-/// fails).
-fn energy_error_every_step(scene: &Scene, method: &MethodSpec, h: f64) -> Result<f64, SimError> {
-    let mut sim = build(&scene.system, method, scene.reconstruct, &scene.solver)?;
-    let n = steps_for(scene.duration, h);
-    let h_last = scene.duration - (n - 1) as f64 * h;
+/// max_k |E_k − E₀|/|E₀| over every step of the scene run with `method` at step h, or to
+/// `tolerance` (∞ if a step fails).
+fn energy_error_every_step(
+    scene: &Scene,
+    method: &MethodSpec,
+    h: f64,
+    tolerance: Option<f64>,
+) -> Result<f64, SimError> {
+    let Some(tolerance) = tolerance else {
+        let mut sim = build(&scene.system, method, scene.reconstruct, &scene.solver)?;
+        let n = steps_for(scene.duration, h);
+        let h_last = scene.duration - (n - 1) as f64 * h;
+        let e0 = sim.energy();
+        let mut worst = 0.0f64;
+        for k in 0..n {
+            if sim.step(if k + 1 == n { h_last } else { h }).is_err() {
+                return Ok(f64::INFINITY);
+            }
+            worst = worst.max(relative_error(sim.energy(), e0));
+        }
+        return Ok(worst);
+    };
+    let tolerance = Tolerance::uniform(tolerance).map_err(|e| SimError::Choose {
+        message: e.to_string(),
+    })?;
+    let mut sim = build_with(
+        &scene.system,
+        method,
+        scene.reconstruct,
+        &scene.solver,
+        Some(tolerance),
+    )?;
     let e0 = sim.energy();
     let mut worst = 0.0f64;
-    for k in 0..n {
-        if sim.step(if k + 1 == n { h_last } else { h }).is_err() {
+    while sim.time() != scene.duration {
+        if sim.step_towards(scene.duration).is_err() {
             return Ok(f64::INFINITY);
         }
         worst = worst.max(relative_error(sim.energy(), e0));
@@ -240,6 +316,9 @@ pub fn scene_with(text: &str, chosen: &Candidate, duration: f64) -> Result<Strin
         "modified",
         "order",
         "step",
+        "tolerance",
+        "rtol",
+        "atol",
         "duration",
     ] {
         it.remove(key);
@@ -265,13 +344,55 @@ pub fn scene_with(text: &str, chosen: &Candidate, duration: f64) -> Result<Strin
         it.insert("modified".into(), true.into());
         it.insert("order".into(), i64::from(order).into());
     }
-    it.insert("step".into(), chosen.h.into());
+    match chosen.tolerance {
+        Some(t) => it.insert("tolerance".into(), t.into()),
+        None => it.insert("step".into(), chosen.h.into()),
+    };
     it.insert("duration".into(), duration.into());
     Ok(format!(
-        "# Chosen by `lie-sim choose`: {m} at h = {}.\n{}",
-        chosen.h,
+        "# Chosen by `lie-sim choose`: {m} at {}.\n{}",
+        chosen.setting(),
         toml::to_string(&doc).map_err(|e| SimError::Choose {
             message: format!("cannot write the chosen scene: {e}"),
         })?
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::methods::MethodId;
+    use crate::scene::{Overrides, DEFAULT_SCENE};
+
+    /// A tolerance-driven choice is written as `tolerance` in place of `step` (and a fixed-step
+    /// one as `step`), and the written scene reads back as that method at that tolerance.
+    #[test]
+    fn a_tolerance_is_written_in_place_of_the_step() {
+        let chosen = Candidate {
+            method: MethodSpec::plain(MethodId::Dop853),
+            h: 10.0,
+            tolerance: Some(1e-9),
+            seconds: 1.0,
+            value: 1e-9,
+        };
+        let text = scene_with(DEFAULT_SCENE, &chosen, 10.0).unwrap();
+        let scene = Scene::parse(&text, "w", "w", Overrides::default()).unwrap();
+        assert_eq!(scene.method.method, MethodId::Dop853);
+        assert_eq!(scene.tolerance, Some(Tolerance::uniform(1e-9).unwrap()));
+        assert!(!text.contains("step ="), "{text}");
+        let fixed = Candidate {
+            method: MethodSpec::plain(MethodId::Rk4),
+            tolerance: None,
+            h: 0.05,
+            ..chosen
+        };
+        let scene = Scene::parse(
+            &scene_with(DEFAULT_SCENE, &fixed, 10.0).unwrap(),
+            "w",
+            "w",
+            Overrides::default(),
+        )
+        .unwrap();
+        assert_eq!((scene.tolerance, scene.step), (None, 0.05));
+    }
 }

@@ -58,6 +58,7 @@ mod reference;
 mod run;
 mod scene;
 mod sim;
+mod stepping;
 mod sweep;
 mod systems;
 mod taus;
@@ -493,17 +494,36 @@ fn cmd_run(
             s.order()
         );
     }
-    say!(
-        "  steps        {} × h = {} to T = {}{}",
-        summary.steps,
-        scene.step,
-        scene.duration,
-        if scene.reconstruct {
-            ""
-        } else {
-            " (momentum only, no reconstruction)"
+    let reconstructs = if scene.reconstruct {
+        ""
+    } else {
+        " (momentum only, no reconstruction)"
+    };
+    match (&scene.tolerance, &summary.stats) {
+        (Some(tol), Some(stats)) => {
+            say!(
+                "  tolerance    rtol = {:e}, atol = {:e}",
+                tol.rtol,
+                tol.atol
+            );
+            say!(
+                "  steps        {} accepted, {} rejected, h in [{:.3e}, {:.3e}] to T = {}{}",
+                stats.accepted,
+                stats.rejected,
+                stats.min_step,
+                stats.max_step,
+                scene.duration,
+                reconstructs
+            );
         }
-    );
+        _ => say!(
+            "  steps        {} × h = {} to T = {}{}",
+            summary.steps,
+            scene.step,
+            scene.duration,
+            reconstructs
+        ),
+    }
     say!(
         "  wall time    {} ({:.0} ns per step, output included)",
         human_duration(summary.wall),
@@ -645,7 +665,16 @@ fn cmd_trade(
     }
     say!("{}", trade::table_header());
     let bar = show_progress().then(|| {
-        let runs = methods::candidates().len() * ladder.steps.len();
+        let runs: usize = methods::candidates()
+            .iter()
+            .map(|m| {
+                if trade::tolerance_driven(m) {
+                    trade::TOLERANCES.len()
+                } else {
+                    ladder.steps.len()
+                }
+            })
+            .sum();
         let b = indicatif::ProgressBar::new(runs as u64);
         if let Ok(style) = indicatif::ProgressStyle::with_template(
             "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} runs (eta {eta})",
@@ -677,11 +706,31 @@ fn cmd_trade(
         trade::ORDER_FIT_REFERENCE_MARGIN,
         trade::ORDER_FIT_MAX_ERROR
     );
-    for (m, rows) in trade::by_method(&report.rows) {
-        match trade::fitted_order(&rows, report.reference.estimated_error) {
+    let groups = trade::by_method(&report.rows);
+    for (m, rows) in groups.iter().filter(|(m, _)| !trade::tolerance_driven(m)) {
+        match trade::fitted_order(rows, report.reference.estimated_error) {
             Some(p) => say!("  {:<52} {p:.2}", m.to_string()),
             None => say!("  {:<52} -", m.to_string()),
         }
+    }
+    say!(
+        "tolerance proportionality (error at T / tolerance, over the resolved runs; 1 would \
+         be exact):"
+    );
+    for (m, rows) in groups.iter().filter(|(m, _)| trade::tolerance_driven(m)) {
+        let ratios: Vec<f64> = rows.iter().filter_map(|r| r.proportionality()).collect();
+        if ratios.is_empty() {
+            say!("  {:<52} -", m.to_string());
+            continue;
+        }
+        let (lo, hi) = ratios
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+        say!(
+            "  {:<52} {lo:.2} … {hi:.2} over {} tolerances",
+            m.to_string(),
+            ratios.len()
+        );
     }
     let picks = trade::cheapest_per_target(&report.rows, metric, report.reference.estimated_error);
     if !picks.is_empty() {
@@ -690,9 +739,9 @@ fn cmd_trade(
         for (target, r) in picks {
             let value = metric.of(r).unwrap_or(f64::NAN);
             say!(
-                "  ≤ {target:.0e}  {} at h = {:.3e}: {} in {}",
+                "  ≤ {target:.0e}  {} at {}: {} in {}",
                 r.method,
-                r.h,
+                trade::run_label(r),
                 if metric == trade::Metric::Error && value < floor {
                     format!("unresolved (below the reference's estimated error {floor:.1e})")
                 } else {
@@ -866,14 +915,17 @@ fn cmd_choose(
             |c| {
                 if c.value < floor {
                     format!(
-                        "the best run ({} at h = {}) is below the reference's estimated error \
+                        "the best run ({} at {}) is below the reference's estimated error \
                          {floor:.1e} (unresolved)",
-                        c.method, c.h
+                        c.method,
+                        c.setting()
                     )
                 } else {
                     format!(
-                        "the best run reached {:.2e} ({} at h = {})",
-                        c.value, c.method, c.h
+                        "the best run reached {:.2e} ({} at {})",
+                        c.value,
+                        c.method,
+                        c.setting()
                     )
                 }
             },
@@ -902,9 +954,9 @@ fn cmd_choose(
     }
     let show = |c: &choose::Candidate| {
         format!(
-            "{} at h = {}: {what} {}, {} ({:.0} ns per unit of time)",
+            "{} at {}: {what} {}, {} ({:.0} ns per unit of time)",
             c.method,
-            c.h,
+            c.setting(),
             if c.value < floor {
                 format!("unresolved (below the reference's estimated error {floor:.1e})")
             } else {

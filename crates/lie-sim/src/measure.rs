@@ -12,6 +12,7 @@ use crate::error::SimError;
 use crate::invariants::Monitor;
 use crate::scene::steps_for;
 use crate::sim::Simulation;
+use integrators::adaptive::Stats;
 use std::time::{Duration, Instant};
 
 /// Steps between two energy samples (and two clock reads) in a timed run.
@@ -58,8 +59,10 @@ impl FinalState {
 pub struct Timed {
     /// The state at T.
     pub state: FinalState,
-    /// Steps taken.
+    /// Steps taken (accepted, for a tolerance-driven run).
     pub steps: u64,
+    /// A tolerance-driven run's accepted and rejected steps and smallest and largest step.
+    pub stats: Option<Stats>,
     /// Time spent in `step` (the clock is read every [`ENERGY_SAMPLE`] steps).
     pub stepping: Duration,
     /// Maximum relative energy error over the samples.
@@ -75,18 +78,36 @@ pub struct Timed {
 /// invariants of [`crate::invariants`] every [`ENERGY_SAMPLE`] steps and at T, outside the timed
 /// intervals.
 pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Timed, SimError> {
-    let n = steps_for(duration, h);
-    let h_last = duration - (n - 1) as f64 * h;
+    timed(sim, duration, Some(h))
+}
+
+/// Runs a tolerance-driven `sim` ([`crate::sim::PairSim`]) to `duration` with the steps its
+/// controller accepts, the last landing on T, sampling as [`timed_run`] does.
+pub fn timed_adaptive_run(sim: &mut dyn Simulation, duration: f64) -> Result<Timed, SimError> {
+    timed(sim, duration, None)
+}
+
+/// [`timed_run`] with the step `h`, or [`timed_adaptive_run`] without.
+fn timed(sim: &mut dyn Simulation, duration: f64, h: Option<f64>) -> Result<Timed, SimError> {
+    let n = h.map_or(u64::MAX, |h| steps_for(duration, h));
+    let h_last = h.map_or(0.0, |h| duration - (n - 1) as f64 * h);
+    let done = |sim: &dyn Simulation, k: u64| match h {
+        Some(_) => k == n,
+        None => sim.time() == duration,
+    };
     let mut monitor = Monitor::new(sim);
     let mut stepping = Duration::ZERO;
     let mut k = 0u64;
     let mut state = None;
-    while k < n {
+    while !done(sim, k) {
         let chunk_end = (k + ENERGY_SAMPLE).min(n);
         let start = Instant::now();
-        while k < chunk_end {
-            let hk = if k + 1 == n { h_last } else { h };
-            if let Err(message) = sim.step(hk) {
+        while k < chunk_end && !done(sim, k) {
+            let stepped = match h {
+                Some(h) => sim.step(if k + 1 == n { h_last } else { h }),
+                None => sim.step_towards(duration),
+            };
+            if let Err(message) = stepped {
                 return Err(SimError::Step {
                     step: k,
                     time: sim.time(),
@@ -95,7 +116,7 @@ pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Time
             }
             k += 1;
         }
-        if k == n {
+        if done(sim, k) {
             // The state at T is part of the run's cost: for a processed method, the processor.
             state = Some(FinalState::of(sim));
         }
@@ -117,7 +138,8 @@ pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Time
     }
     Ok(Timed {
         state: state.unwrap_or_else(|| FinalState::of(sim)),
-        steps: n,
+        steps: k,
+        stats: sim.stats(),
         stepping,
         max_energy_error: monitor.energy,
         max_casimir_error: monitor.casimir,

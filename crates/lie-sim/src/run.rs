@@ -4,13 +4,14 @@
 //! row-major; left out when the scene does not reconstruct g), `energy`, and `casimir` where the
 //! system has one.
 
-use crate::build::build;
+use crate::build::build_with;
 use crate::error::SimError;
 use crate::invariants::relative_error;
 use crate::output::AtomicFile;
 use crate::scene::{EventSpec, Scene};
 use crate::sim::Simulation;
 use indicatif::{ProgressBar, ProgressStyle};
+use integrators::adaptive::Stats;
 use integrators::events::find_crossing;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -22,8 +23,10 @@ pub const PROGRESS_MIN_STEPS: u64 = 200_000;
 /// What a run did, for the summary.
 #[derive(Debug, Clone)]
 pub struct RunSummary {
-    /// Steps taken.
+    /// Steps taken (accepted, for a tolerance-driven run).
     pub steps: u64,
+    /// A tolerance-driven run's accepted and rejected steps and smallest and largest step.
+    pub stats: Option<Stats>,
     /// CSV rows written (without the header).
     pub rows: u64,
     /// Wall time of the whole run, stepping and writing.
@@ -141,11 +144,12 @@ pub fn run_scene(
     progress: bool,
     allow_large: bool,
 ) -> Result<RunSummary, SimError> {
-    let mut sim = build(
+    let mut sim = build_with(
         &scene.system,
         &scene.method,
         scene.reconstruct,
         &scene.solver,
+        scene.tolerance,
     )?;
     let n = u128::from(scene.steps());
     // The runner reads the state after every step (energy monitor, rows, events): a processed
@@ -167,8 +171,9 @@ pub fn run_scene(
 
 /// Runs an already built simulation for the scene's duration, writing the CSV to `out`.
 ///
-/// Steps of size h, the last one shortened so that the run ends at T exactly; a row at t = 0,
-/// every `stride` steps, and at t = T — or, with `[output] times`, rows at exactly those times,
+/// Steps of size h, the last one shortened so that the run ends at T exactly — or, for a
+/// tolerance-driven scene, the steps its controller accepts, the last one landing on T
+/// ([`Simulation::step_towards`]); a row at t = 0, every `stride` steps, and at t = T — or, with `[output] times`, rows at exactly those times,
 /// interpolated between steps ([`Simulation::read_at`]). `[[events]]` crossings are located on
 /// the step's interpolant to [`EVENT_TOLERANCE`] × max(1, T) and returned; a `stop = true`
 /// event ends the run with a last row at its time.
@@ -186,7 +191,9 @@ pub fn run_simulation(
     let start = Instant::now();
     let file = AtomicFile::new(out)?;
     let mut w = file.create()?;
-    let n = scene.steps();
+    let adaptive = scene.tolerance.is_some();
+    // A tolerance-driven run does not know its steps ahead: its progress is the time reached.
+    let n = if adaptive { u64::MAX } else { scene.steps() };
     let h = scene.step;
     let h_last = scene.duration - (n - 1) as f64 * h;
 
@@ -242,8 +249,9 @@ pub fn run_simulation(
     let mut max_e = 0.0f64;
     let mut max_c = c0.map(|_| 0.0f64);
 
-    let bar = (progress && n >= PROGRESS_MIN_STEPS).then(|| {
-        let b = ProgressBar::new(n);
+    const TIME_TICKS: u64 = 1000;
+    let bar = (progress && (adaptive || n >= PROGRESS_MIN_STEPS)).then(|| {
+        let b = ProgressBar::new(if adaptive { TIME_TICKS } else { n });
         if let Ok(style) = ProgressStyle::with_template(
             "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} steps (eta {eta})",
         ) {
@@ -251,21 +259,38 @@ pub fn run_simulation(
         }
         b
     });
-    let tick = (n / 500).max(1);
+    let tick = if adaptive { 64 } else { (n / 500).max(1) };
+    let position = |k: u64, t: f64| {
+        if adaptive {
+            (t / scene.duration * TIME_TICKS as f64) as u64
+        } else {
+            k
+        }
+    };
 
     let mut taken = 0;
-    for k in 0..n {
-        let hk = if k + 1 == n { h_last } else { h };
+    let mut k = 0u64;
+    loop {
         let t = sim.time();
         if dense {
             sim.mark();
         }
-        sim.step(hk).map_err(|message| SimError::Step {
+        let stepped = if adaptive {
+            sim.step_towards(scene.duration)
+        } else {
+            sim.step(if k + 1 == n { h_last } else { h })
+        };
+        stepped.map_err(|message| SimError::Step {
             step: k,
             time: t,
             message,
         })?;
         taken += 1;
+        let last = if adaptive {
+            sim.time() == scene.duration
+        } else {
+            k + 1 == n
+        };
         let e = sim.energy();
         if !e.is_finite() {
             if let Some(message) = sim.read_error() {
@@ -281,16 +306,19 @@ pub fn run_simulation(
         if let (Some(c0), Some(mc), Some(c)) = (c0, max_c.as_mut(), sim.casimir()) {
             *mc = mc.max(relative_error(c, c0));
         }
-        let stride_row =
-            scene.output_times.is_none() && (since_row + 1 == scene.stride || k + 1 == n);
+        let stride_row = scene.output_times.is_none() && (since_row + 1 == scene.stride || last);
         let time_row = next_time < times.len() && times[next_time] <= sim.time();
         if events.is_empty() && !stride_row && !time_row {
             since_row += 1;
             if let Some(b) = &bar {
                 if k % tick == 0 {
-                    b.set_position(k);
+                    b.set_position(position(k, sim.time()));
                 }
             }
+            if last {
+                break;
+            }
+            k += 1;
             continue;
         }
         sim.read(&mut row1);
@@ -338,7 +366,7 @@ pub fn run_simulation(
             if stopped_at.is_some() {
                 write_cells(&mut w, row_at(sim, &row1, &mut between, t_end, k)?).map_err(werr)?;
                 rows += 1;
-            } else if since_row == scene.stride || k + 1 == n {
+            } else if since_row == scene.stride || last {
                 write_cells(&mut w, &row1).map_err(werr)?;
                 rows += 1;
                 since_row = 0;
@@ -346,13 +374,14 @@ pub fn run_simulation(
         }
         if let Some(b) = &bar {
             if k % tick == 0 {
-                b.set_position(k);
+                b.set_position(position(k, sim.time()));
             }
         }
         std::mem::swap(&mut row0, &mut row1);
-        if stopped_at.is_some() {
+        if stopped_at.is_some() || last {
             break;
         }
+        k += 1;
     }
     if let Some(b) = bar {
         b.finish_and_clear();
@@ -360,6 +389,7 @@ pub fn run_simulation(
     file.commit_writer(w)?;
     Ok(RunSummary {
         steps: taken,
+        stats: sim.stats(),
         rows,
         wall: start.elapsed(),
         max_energy_error: max_e,
@@ -454,5 +484,71 @@ mod tests {
         let err = run_simulation(&mut sim, &scene(1.0, 0.1, 1), &out, false).unwrap_err();
         assert!(err.to_string().starts_with("step 4 at t = 0.4"), "{err}");
         assert!(!out.exists());
+    }
+
+    /// A scene with a tolerance: the run takes the steps of the library's driver, lands on T
+    /// exactly, reports its accepted and rejected steps and their range, writes the rows at the
+    /// requested times by partial steps — and each row is the library's own run
+    /// (`Adaptive::solve` on the same pair, bit for bit).
+    #[test]
+    fn a_tolerance_driven_run_lands_on_t_and_reports_its_steps() {
+        use integrators::adaptive::{Adaptive, RkmkDop853, Tolerance};
+        use lie_groups::{LieGroup, So3};
+        use mechanics::RigidBody;
+        use nalgebra::Vector3;
+        let text = "[system]\nkind = \"free-rigid-body\"\ninertia = [1.0, 2.0, 3.0]\n\
+                    [initial]\nmomentum = [0.3, 2.0, 0.1]\n\
+                    [integrator]\nmethod = \"rkmk-dop853\"\ntolerance = 1e-9\nduration = 7.3\n\
+                    [output]\ntimes = [0.0, 1.25, 7.3]\n";
+        let scene = Scene::parse(text, "s", "s", Overrides::default()).unwrap();
+        let out = tmp("adaptive.csv");
+        let s = run_scene(&scene, &out, false, false).unwrap();
+        let stats = s.stats.expect("a tolerance-driven run reports its steps");
+        assert_eq!(stats.accepted as u64, s.steps);
+        assert!(
+            stats.accepted > 3 && stats.min_step < stats.max_step,
+            "{stats:?}"
+        );
+        let text = std::fs::read_to_string(&out).unwrap();
+        let rows: Vec<Vec<f64>> = text
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(rows.len(), 3);
+        assert_eq!(rows[2][0], 7.3, "the last row is at T exactly");
+
+        let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+        let pi0 = Vector3::new(0.3, 2.0, 0.1);
+        let method = RkmkDop853::new(body, pi0, Some(So3::identity())).unwrap();
+        let mut run = Adaptive::new(method, Tolerance::uniform(1e-9).unwrap());
+        let mut samples = Vec::new();
+        run.solve(
+            7.3,
+            &[0.0, 1.25, 7.3],
+            |t, pi, _| samples.push((t, *pi)),
+            &[],
+        )
+        .unwrap();
+        assert_eq!(run.stats(), &stats);
+        for (row, (t, pi)) in rows.iter().zip(&samples) {
+            assert_eq!(row[0], *t);
+            assert_eq!(&row[1..4], pi.as_slice(), "at t = {t}");
+        }
+    }
+
+    /// A scene refused for its tolerance leaves no output file.
+    #[test]
+    fn a_bad_tolerance_is_refused_before_anything_is_written() {
+        let text = "[system]\nkind = \"free-rigid-body\"\ninertia = [1.0, 2.0, 3.0]\n\
+                    [initial]\nmomentum = [0.3, 2.0, 0.1]\n\
+                    [integrator]\nmethod = \"dop853\"\ntolerance = 1e-17\nduration = 1.0\n";
+        let e = Scene::parse(text, "s", "s", Overrides::default())
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("integrator.tolerance") && e.contains("1e-17"),
+            "{e}"
+        );
     }
 }

@@ -18,12 +18,15 @@
 //!                                   #   the options it takes and the systems it applies to
 //! tau = "cayley"                    # τ map, for the methods that take one
 //! theta = 0.5                       # θ ∈ [0, 1] of the discretization map, where taken
-//! step = 0.01                       # h > 0
+//! step = 0.01                       # h > 0, for a fixed-step method
+//! # tolerance = 1e-8                # or, for a tolerance-driven method (rkmk-dop853, dop853, …):
+//! # rtol = 1e-8                     #   rtol = atol = tolerance, or rtol and atol apart (as
+//! # atol = 1e-10                    #   scipy and diffsol name them; crate::stepping)
 //! duration = 100.0                  # T > 0; ⌈T/h⌉ steps, the last one shortened to land on T
 //! reconstruct = true                # integrate g as well as μ (default true)
 //! # solver = "simplified-newton"    # implicit solver: simplified-newton (default) | newton |
 //! #                                   #   newton-fd | fixed-point
-//! # tolerance = 1e-14               # implicit solver options (default: the integrators crate's)
+//! # solver_tolerance = 1e-14        # implicit solver options (default: the integrators crate's)
 //! # max_iterations = 50
 //! # composition = "kahan-li-6"      # compose a symmetric base to order 4, 6, 8, … (below)
 //! # processing = "blanes-casas-murua-6-11"  # the processed method P ∘ Kⁿ ∘ P⁻¹ of a symmetric
@@ -106,8 +109,10 @@ use crate::forces::{check_forces, RawForces};
 use crate::methods::spec::{check as check_method, RawIntegrator, SolverOptions};
 use crate::methods::wrap::BuildError;
 use crate::methods::MethodSpec;
+use crate::stepping::{check as check_stepping, RawStepping, StepChoice};
 use crate::systems::common::SceneSystem;
 use crate::systems::{with_kind, KindVisitor, System, SystemKind};
+use integrators::adaptive::Tolerance;
 use serde::de::DeserializeOwned;
 use serde::Deserialize;
 use std::path::Path;
@@ -265,8 +270,11 @@ pub struct Scene {
     pub solver: SolverOptions,
     /// Whether the group element is integrated.
     pub reconstruct: bool,
-    /// Step h.
+    /// Step h; for a tolerance-driven run, the duration T (its controller chooses its steps,
+    /// none longer than the run).
     pub step: f64,
+    /// The tolerance of a tolerance-driven run (`crate::stepping`), `None` for fixed steps.
+    pub tolerance: Option<Tolerance>,
     /// Duration T.
     pub duration: f64,
     /// Output stride.
@@ -407,7 +415,7 @@ impl Scene {
             common.integrator.duration = d;
         }
         if let Some(h) = overrides.step {
-            common.integrator.step = h;
+            common.integrator.step = Some(h);
         }
         if let Some(s) = overrides.stride {
             common.output.stride = Some(s);
@@ -445,17 +453,18 @@ impl Scene {
         }
 
         let it = &raw.integrator;
-        let step = positive("integrator.step", it.step).map_err(|(f, m)| bad(&f, m))?;
         let duration = positive("integrator.duration", it.duration).map_err(|(f, m)| bad(&f, m))?;
-        if step > duration {
-            return Err(bad(
-                "integrator.step",
-                format!(
-                    "h = {step} exceeds the duration T = {duration}: give a step no longer than \
-                     the run (one step to T is step = duration)"
-                ),
-            ));
-        }
+        let stepping = RawStepping {
+            step: it.step,
+            tolerance: it.tolerance,
+            rtol: it.rtol,
+            atol: it.atol,
+        };
+        let (step, tolerance) =
+            match check_stepping(&stepping, it.method, duration).map_err(|(f, m)| bad(&f, m))? {
+                StepChoice::Fixed(h) => (h, None),
+                StepChoice::Tolerance(t) => (duration, Some(t)),
+            };
         if duration / step > MAX_STEPS {
             return Err(bad(
                 "integrator.duration",
@@ -466,8 +475,8 @@ impl Scene {
             ));
         }
         let method = check_method(it).map_err(|(f, m)| bad(&f, m))?;
-        if let Some(tol) = it.tolerance {
-            positive("integrator.tolerance", tol).map_err(|(f, m)| bad(&f, m))?;
+        if let Some(tol) = it.solver_tolerance {
+            positive("integrator.solver_tolerance", tol).map_err(|(f, m)| bad(&f, m))?;
         }
         if it.max_iterations == Some(0) {
             return Err(bad(
@@ -477,7 +486,7 @@ impl Scene {
         }
         let solver = SolverOptions {
             kind: it.solver,
-            tolerance: it.tolerance,
+            tolerance: it.solver_tolerance,
             max_iterations: it.max_iterations,
         };
         let reconstruct = it.reconstruct.unwrap_or(true);
@@ -554,6 +563,7 @@ impl Scene {
             solver,
             reconstruct,
             step,
+            tolerance,
             duration,
             stride,
             output_times,

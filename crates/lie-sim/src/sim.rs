@@ -7,10 +7,13 @@
 //! step allocates nothing for it (groups whose matrix lives on the stack: SO(3), SE(2), SE(3)).
 
 use faer::Mat;
+use integrators::adaptive::{Adaptive, Controller, EmbeddedPair, Stats, Tolerance};
 use integrators::dense_output::{DenseState, HermiteStep};
 use integrators::{Integrator, IntegratorError, MethodInfo};
 use lie_groups::{LieGroup, Vector};
 use nalgebra::{DMatrix, SMatrix};
+use std::any::Any;
+use std::cell::RefCell;
 
 /// One running simulation: the integrator, its system and its state.
 ///
@@ -57,6 +60,18 @@ pub trait Simulation {
     /// interpolated state), written into `row`.
     fn read_at(&self, _t: f64, _row: &mut [f64]) -> Result<(), String> {
         Err("this simulation has no dense output".into())
+    }
+
+    /// One accepted step of a tolerance-driven run towards `t_end`, the last one landing on it
+    /// exactly (`integrators::adaptive::Adaptive::step_towards`); on error the state is the last
+    /// accepted one. A fixed-step simulation refuses.
+    fn step_towards(&mut self, _t_end: f64) -> Result<(), String> {
+        Err("this method takes a fixed step h, not a tolerance".into())
+    }
+    /// Accepted and rejected steps and the smallest and largest step of a tolerance-driven run;
+    /// `None` for fixed steps.
+    fn stats(&self) -> Option<Stats> {
+        None
     }
 
     /// The number of columns of a trajectory row (`crate::run::columns`).
@@ -151,17 +166,155 @@ pub trait SimGroup: LieGroup<Matrix: Entries> {}
 impl<G: LieGroup<Matrix: Entries>> SimGroup for G {}
 
 /// Any integrator of the integrators crate on the group G, boxed: the type a scene's method (with
-/// its τ, θ, composition, processing) is erased to, so that one code path runs them all.
-pub struct Boxed<G: LieGroup>(Box<dyn Integrator<Group = G>>);
+/// its τ, θ, composition, processing) is erased to, so that one code path runs them all. A
+/// method with an error estimate is boxed as a [`Pair`] ([`Boxed::pair`]), so that a scene may
+/// run it to a tolerance ([`Boxed::into_pair`]) as well as with fixed steps.
+pub struct Boxed<G: LieGroup>(Erased<G>);
+
+enum Erased<G: LieGroup> {
+    Fixed(Box<dyn Integrator<Group = G>>),
+    Pair(Pair<G>),
+}
 
 impl<G: LieGroup> Boxed<G> {
     /// Erases `i`.
     pub fn new<I: Integrator<Group = G> + 'static>(i: I) -> Self {
-        Self(Box::new(i))
+        Self(Erased::Fixed(Box::new(i)))
+    }
+    /// Erases the embedded pair `p`, keeping its error estimate.
+    pub fn pair<P: EmbeddedPair<Group = G> + 'static>(p: P) -> Self {
+        Self(Erased::Pair(Pair(Box::new(p))))
+    }
+    /// The embedded pair, when the method is one; itself otherwise.
+    pub fn into_pair(self) -> Result<Pair<G>, Self> {
+        match self.0 {
+            Erased::Pair(p) => Ok(p),
+            fixed => Err(Self(fixed)),
+        }
+    }
+    fn inner(&self) -> &dyn Integrator<Group = G> {
+        match &self.0 {
+            Erased::Fixed(b) => &**b,
+            Erased::Pair(p) => &*p.0,
+        }
+    }
+    fn inner_mut(&mut self) -> &mut dyn Integrator<Group = G> {
+        match &mut self.0 {
+            Erased::Fixed(b) => &mut **b,
+            Erased::Pair(p) => &mut *p.0,
+        }
     }
 }
 
 impl<G: LieGroup> Integrator for Boxed<G> {
+    type Group = G;
+    fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
+        self.inner_mut().step(h)
+    }
+    fn time(&self) -> f64 {
+        self.inner().time()
+    }
+    fn momentum(&self) -> G::Algebra {
+        self.inner().momentum()
+    }
+    fn velocity(&self) -> G::Algebra {
+        self.inner().velocity()
+    }
+    fn momentum_rate(&self) -> G::Algebra {
+        self.inner().momentum_rate()
+    }
+    fn configuration(&self) -> Option<&G> {
+        self.inner().configuration()
+    }
+    fn energy(&self) -> f64 {
+        self.inner().energy()
+    }
+    fn casimir(&self) -> Option<f64> {
+        self.inner().casimir()
+    }
+    fn method_name(&self) -> String {
+        self.inner().method_name()
+    }
+    fn info(&self) -> MethodInfo {
+        self.inner().info()
+    }
+    fn read_error(&self) -> Option<IntegratorError> {
+        self.inner().read_error()
+    }
+}
+
+/// An [`EmbeddedPair`] with its type erased (object safe: no `Clone` bound), so that a scene's
+/// pair is one type for the adaptive driver whatever its group, tableau and system.
+pub trait DynPair: Integrator + Any {
+    /// [`EmbeddedPair::orders`].
+    fn orders(&self) -> (u32, u32);
+    /// [`EmbeddedPair::controller`].
+    fn controller(&self) -> Controller;
+    /// [`EmbeddedPair::error_exponent`].
+    fn error_exponent(&self) -> u32;
+    /// [`EmbeddedPair::try_step_to`].
+    fn try_step_to(&mut self, t1: f64, tolerance: &Tolerance) -> Result<f64, IntegratorError>;
+    /// [`EmbeddedPair::step_to`].
+    fn step_to(&mut self, t1: f64) -> Result<(), IntegratorError>;
+    /// [`EmbeddedPair::starting_step`].
+    fn starting_step(&mut self, direction: f64, tolerance: &Tolerance) -> f64;
+    /// A boxed copy.
+    fn clone_box(&self) -> Box<dyn DynPair<Group = Self::Group>>;
+    /// Overwrites `self` with `other`'s state, in place (`Clone::clone_from`: no allocation for
+    /// a pair whose system holds none), when both are the same pair; `false` otherwise.
+    fn copy_from(&mut self, other: &dyn Any) -> bool;
+}
+
+impl<P: EmbeddedPair + 'static> DynPair for P {
+    fn orders(&self) -> (u32, u32) {
+        EmbeddedPair::orders(self)
+    }
+    fn controller(&self) -> Controller {
+        EmbeddedPair::controller(self)
+    }
+    fn error_exponent(&self) -> u32 {
+        EmbeddedPair::error_exponent(self)
+    }
+    fn try_step_to(&mut self, t1: f64, tolerance: &Tolerance) -> Result<f64, IntegratorError> {
+        EmbeddedPair::try_step_to(self, t1, tolerance)
+    }
+    fn step_to(&mut self, t1: f64) -> Result<(), IntegratorError> {
+        EmbeddedPair::step_to(self, t1)
+    }
+    fn starting_step(&mut self, direction: f64, tolerance: &Tolerance) -> f64 {
+        EmbeddedPair::starting_step(self, direction, tolerance)
+    }
+    fn clone_box(&self) -> Box<dyn DynPair<Group = P::Group>> {
+        Box::new(self.clone())
+    }
+    fn copy_from(&mut self, other: &dyn Any) -> bool {
+        match other.downcast_ref::<P>() {
+            Some(o) => {
+                self.clone_from(o);
+                true
+            }
+            None => false,
+        }
+    }
+}
+
+/// A boxed [`DynPair`]: the [`EmbeddedPair`] the adaptive driver runs for any scene.
+pub struct Pair<G: LieGroup>(Box<dyn DynPair<Group = G>>);
+
+impl<G: LieGroup> Clone for Pair<G> {
+    fn clone(&self) -> Self {
+        Self(self.0.clone_box())
+    }
+    /// In place when both are copies of one pair (the run's mark each step): no allocation.
+    fn clone_from(&mut self, source: &Self) {
+        let other: &dyn Any = &*source.0;
+        if !self.0.copy_from(other) {
+            self.0 = source.0.clone_box();
+        }
+    }
+}
+
+impl<G: LieGroup> Integrator for Pair<G> {
     type Group = G;
     fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
         self.0.step(h)
@@ -198,6 +351,27 @@ impl<G: LieGroup> Integrator for Boxed<G> {
     }
 }
 
+impl<G: LieGroup> EmbeddedPair for Pair<G> {
+    fn orders(&self) -> (u32, u32) {
+        self.0.orders()
+    }
+    fn controller(&self) -> Controller {
+        self.0.controller()
+    }
+    fn error_exponent(&self) -> u32 {
+        self.0.error_exponent()
+    }
+    fn try_step_to(&mut self, t1: f64, tolerance: &Tolerance) -> Result<f64, IntegratorError> {
+        self.0.try_step_to(t1, tolerance)
+    }
+    fn step_to(&mut self, t1: f64) -> Result<(), IntegratorError> {
+        self.0.step_to(t1)
+    }
+    fn starting_step(&mut self, direction: f64, tolerance: &Tolerance) -> f64 {
+        self.0.starting_step(direction, tolerance)
+    }
+}
+
 /// Any integrator of the integrators crate, with its system, seen as a [`Simulation`].
 pub struct Adapter<I: Integrator, S> {
     integrator: I,
@@ -224,6 +398,59 @@ fn write_vector<V: Vector>(v: &V, out: &mut [f64]) {
     }
 }
 
+/// g's matrix side, when reconstructed.
+fn group_side<I: Integrator<Group: SimGroup>>(i: &I) -> Option<usize> {
+    i.configuration().map(|g| g.matrix().side())
+}
+
+/// g's entries row-major into `out`; `false` when g is not reconstructed.
+fn read_group<I: Integrator<Group: SimGroup>>(i: &I, out: &mut [f64]) -> bool {
+    match i.configuration() {
+        Some(g) => {
+            g.matrix().write_row_major(out);
+            true
+        }
+        None => false,
+    }
+}
+
+/// The spatial momentum map into `out` (see [`Simulation::read_spatial_momentum`]).
+fn read_spatial_momentum<I: Integrator<Group: SimGroup>>(i: &I, out: &mut [f64]) -> bool {
+    // Ad*_{g⁻¹} μ = (Ad_{g⁻¹})ᵀ μ: `coadjoint_apply` is the dual map of Ad, so it is applied
+    // to g⁻¹ (on SO(3), Ad_{R⁻¹} = Rᵀ and J = R Π).
+    match i.configuration() {
+        Some(g) => {
+            write_vector(&g.inverse().coadjoint_apply(&i.momentum()), out);
+            true
+        }
+        None => false,
+    }
+}
+
+/// The trajectory row of the state (μ, g) at t into `row`, energy and Casimir from `system`.
+fn write_row<G: SimGroup, S: integrators::System<G>>(
+    system: &S,
+    t: f64,
+    mu: &G::Algebra,
+    g: Option<&G>,
+    row: &mut [f64],
+) {
+    row[0] = t;
+    let n = mu.dim();
+    write_vector(mu, &mut row[1..1 + n]);
+    let mut k = 1 + n;
+    if let Some(g) = g {
+        let m = g.matrix();
+        let side = m.side();
+        m.write_row_major(&mut row[k..k + side * side]);
+        k += side * side;
+    }
+    row[k] = system.energy(mu, g);
+    if let Some(c) = system.casimir(mu) {
+        row[k + 1] = c;
+    }
+}
+
 impl<I, S> Simulation for Adapter<I, S>
 where
     I: Integrator,
@@ -240,19 +467,13 @@ where
         <I::Group as LieGroup>::dim()
     }
     fn group_side(&self) -> Option<usize> {
-        self.integrator.configuration().map(|g| g.matrix().side())
+        group_side(&self.integrator)
     }
     fn read_momentum(&self, out: &mut [f64]) {
         write_vector(&self.integrator.momentum(), out);
     }
     fn read_group(&self, out: &mut [f64]) -> bool {
-        match self.integrator.configuration() {
-            Some(g) => {
-                g.matrix().write_row_major(out);
-                true
-            }
-            None => false,
-        }
+        read_group(&self.integrator, out)
     }
     fn energy(&self) -> f64 {
         self.integrator.energy()
@@ -261,18 +482,7 @@ where
         self.integrator.casimir()
     }
     fn read_spatial_momentum(&self, out: &mut [f64]) -> bool {
-        // Ad*_{g⁻¹} μ = (Ad_{g⁻¹})ᵀ μ: `coadjoint_apply` is the dual map of Ad, so it is applied
-        // to g⁻¹ (on SO(3), Ad_{R⁻¹} = Rᵀ and J = R Π).
-        match self.integrator.configuration() {
-            Some(g) => {
-                write_vector(
-                    &g.inverse().coadjoint_apply(&self.integrator.momentum()),
-                    out,
-                );
-                true
-            }
-            None => false,
-        }
+        read_spatial_momentum(&self.integrator, out)
     }
     fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
         self.system.conserved_momentum_map()
@@ -294,20 +504,98 @@ where
         let step = HermiteStep::between(start, &DenseState::of(&self.integrator))
             .map_err(|e| e.to_string())?;
         let (mu, g) = step.at(t);
-        row[0] = t;
-        let n = mu.dim();
-        write_vector(&mu, &mut row[1..1 + n]);
-        let mut k = 1 + n;
-        if let Some(g) = &g {
-            let m = g.matrix();
-            let side = m.side();
-            m.write_row_major(&mut row[k..k + side * side]);
-            k += side * side;
+        write_row(&self.system, t, &mu, g.as_ref(), row);
+        Ok(())
+    }
+}
+
+/// An embedded pair run to a tolerance by the library's driver
+/// (`integrators::adaptive::Adaptive`), with its system, seen as a [`Simulation`].
+///
+/// Rows between two accepted steps (output times, events) are **partial steps** of the method
+/// from the state at the step's start, as `Adaptive::solve` evaluates them: the method's own
+/// accuracy, where a cubic Hermite interpolant would add its O(h⁴) error over the long steps of
+/// an order-5 or order-8 pair; the step sequence does not depend on them. The start is copied
+/// in place each step ([`Simulation::mark`]) and the partial step taken on a second copy, so
+/// that neither allocates.
+pub struct PairSim<G: LieGroup, S> {
+    run: Adaptive<Pair<G>>,
+    system: S,
+    /// The state at the start of the current step.
+    marked: Pair<G>,
+    /// Where partial steps are taken.
+    scratch: RefCell<Pair<G>>,
+}
+
+impl<G: LieGroup, S> PairSim<G, S> {
+    /// `pair` advancing `system`, run to `tolerance`.
+    pub fn new(pair: Pair<G>, system: S, tolerance: Tolerance) -> Self {
+        let marked = pair.clone();
+        let scratch = RefCell::new(pair.clone());
+        Self {
+            run: Adaptive::new(pair, tolerance),
+            system,
+            marked,
+            scratch,
         }
-        row[k] = self.system.energy(&mu, g.as_ref());
-        if let Some(c) = self.system.casimir(&mu) {
-            row[k + 1] = c;
+    }
+}
+
+impl<G, S> Simulation for PairSim<G, S>
+where
+    G: SimGroup,
+    S: integrators::System<G>,
+{
+    /// A tolerance-driven run takes the steps its controller chooses ([`Self::step_towards`]).
+    fn step(&mut self, _h: f64) -> Result<(), String> {
+        Err("a tolerance-driven run chooses its own steps".into())
+    }
+    fn step_towards(&mut self, t_end: f64) -> Result<(), String> {
+        self.run.step_towards(t_end).map_err(|e| e.to_string())
+    }
+    fn stats(&self) -> Option<Stats> {
+        Some(*self.run.stats())
+    }
+    fn time(&self) -> f64 {
+        self.run.method().time()
+    }
+    fn momentum_dim(&self) -> usize {
+        G::dim()
+    }
+    fn group_side(&self) -> Option<usize> {
+        group_side(self.run.method())
+    }
+    fn read_momentum(&self, out: &mut [f64]) {
+        write_vector(&self.run.method().momentum(), out);
+    }
+    fn read_group(&self, out: &mut [f64]) -> bool {
+        read_group(self.run.method(), out)
+    }
+    fn energy(&self) -> f64 {
+        self.run.method().energy()
+    }
+    fn casimir(&self) -> Option<f64> {
+        self.run.method().casimir()
+    }
+    fn read_spatial_momentum(&self, out: &mut [f64]) -> bool {
+        read_spatial_momentum(self.run.method(), out)
+    }
+    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
+        self.system.conserved_momentum_map()
+    }
+    fn info(&self) -> MethodInfo {
+        self.run.method().info()
+    }
+    fn mark(&mut self) {
+        self.marked.clone_from(self.run.method());
+    }
+    fn read_at(&self, t: f64, row: &mut [f64]) -> Result<(), String> {
+        let mut m = self.scratch.borrow_mut();
+        m.clone_from(&self.marked);
+        if t != m.time() {
+            EmbeddedPair::step_to(&mut *m, t).map_err(|e| e.to_string())?;
         }
+        write_row(&self.system, t, &m.momentum(), m.configuration(), row);
         Ok(())
     }
 }

@@ -257,6 +257,15 @@ pub fn plan(scene: &Scene) -> Result<(SweepSpec, usize, f64), SimError> {
             scene.source
         ),
     })?;
+    if let Some(t) = scene.tolerance {
+        return Err(SimError::Sweep {
+            message: format!(
+                "the ensemble steps its members in lockstep with one fixed step, and {} runs to \
+                 a tolerance (rtol = {:e}): give the sweep a fixed-step method and its step",
+                scene.method, t.rtol
+            ),
+        });
+    }
     let n = steps_for(scene.duration, scene.step);
     let steps = usize::try_from(n).map_err(|_| SimError::Sweep {
         message: format!("{n} steps per trajectory do not fit this machine"),

@@ -19,17 +19,29 @@
 //! over the run (`-` where they do not apply); `--metric` picks the one the plot draws against
 //! cost.
 //!
+//! The tolerance-driven methods (their row's `Stepping::Tolerance`: the embedded pairs) run over
+//! the ladder of tolerances [`TOLERANCES`] (rtol = atol) instead of the steps, next to the
+//! fixed-step runs in the same table and plot (their own colour and markers); their `h` is the
+//! mean accepted step T/steps, their `tolerance` the one asked for, and the table reports the
+//! tolerance proportionality error/tolerance of each run (how far the achieved error at T is
+//! from what was asked: a local tolerance does not bound the global error, and the ratio says
+//! by how much it misses or beats it on this scene). The CSV's `geometric` column says whether
+//! the method keeps structure beyond g on G ([`crate::methods::geometric`], from its
+//! `MethodInfo`).
+//!
 //! Error at T and timing: [`crate::measure`]; nothing of the trajectory is stored.
 
-use crate::build::build;
+use crate::build::{build, build_with};
 use crate::error::SimError;
-use crate::measure::{timed_run, Timed};
-use crate::methods::{candidates, style, MethodSpec};
+use crate::measure::{timed_adaptive_run, timed_run, Timed};
+use crate::methods::row::Stepping;
+use crate::methods::{candidates, geometric, style, MethodSpec};
 use crate::output::write_atomic;
 use crate::plot::{plot_loglog, Annotations, Curve};
 use crate::reference::{meets, Reference};
 use crate::run::Cell;
 use crate::scene::{steps_for, Scene};
+use integrators::adaptive::Tolerance;
 use integrators::MethodInfo;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -41,6 +53,36 @@ pub const ORDER_FIT_REFERENCE_MARGIN: f64 = 10.0;
 /// Rows whose error is above this are outside the asymptotic regime (a phase error of order one
 /// saturates): they are left out of the order fit.
 pub const ORDER_FIT_MAX_ERROR: f64 = 0.1;
+
+/// The tolerances (rtol = atol) a tolerance-driven method runs over, loosest first.
+pub const TOLERANCES: &[f64] = &[
+    1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12,
+];
+
+/// Whether a configuration runs to a tolerance rather than with fixed steps.
+pub fn tolerance_driven(m: &MethodSpec) -> bool {
+    m.method.row().takes.stepping == Stepping::Tolerance
+}
+
+/// How one run of the trade steps: a fixed step h or a tolerance.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Run {
+    Step(f64),
+    Tolerance(f64),
+}
+
+/// The runs of a method in the trade: [`TOLERANCES`] for a tolerance-driven method, the steps of
+/// [`steps_of`] otherwise.
+fn runs_of(m: &MethodSpec, ladder: &[f64], duration: f64) -> Vec<Run> {
+    if tolerance_driven(m) {
+        TOLERANCES.iter().map(|&t| Run::Tolerance(t)).collect()
+    } else {
+        steps_of(m, ladder, duration)
+            .into_iter()
+            .map(Run::Step)
+            .collect()
+    }
+}
 
 /// The steps a method runs in the trade: the ladder, and for the exact flow (whose error does not
 /// depend on h and whose cost per step does not depend on h either) one step to T first.
@@ -57,9 +99,14 @@ fn steps_of(m: &MethodSpec, ladder: &[f64], duration: f64) -> Vec<f64> {
 /// The work of [`trade`] before it starts: every candidate over the ladder (a composite step
 /// counts its stages), `repeats` times. The reference is not counted: its refinement is bounded
 /// by `--reference-budget` (and its first two runs, at h₀ = 1/ω and h₀/2, cost less than the
-/// ladder's coarsest level). Bytes: the table.
+/// ladder's coarsest level), nor are the tolerance-driven runs, whose steps are not known ahead
+/// (each is bounded by the driver's budget of attempted steps). Bytes: the table.
 pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds::Estimate {
-    let per_unit_h: u128 = candidates().iter().map(|m| m.stages() as u128).sum();
+    let per_unit_h: u128 = candidates()
+        .iter()
+        .filter(|m| !tolerance_driven(m))
+        .map(|m| m.stages() as u128)
+        .sum();
     let steps = |h: f64| u128::from(steps_for(scene.duration, h));
     let ladder_steps: u128 = ladder.iter().map(|&h| steps(h)).sum();
     crate::bounds::Estimate {
@@ -75,8 +122,10 @@ pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds:
 pub struct TradeRow {
     /// The method.
     pub method: MethodSpec,
-    /// Step h.
+    /// Step h (the mean accepted step T/steps of a tolerance-driven run).
     pub h: f64,
+    /// The tolerance (rtol = atol) of a tolerance-driven run, `None` for fixed steps.
+    pub tolerance: Option<f64>,
     /// Steps taken (0 when the run failed before the first).
     pub steps: u64,
     /// Mean time per step, ns.
@@ -107,6 +156,12 @@ impl TradeRow {
     pub fn resolved_error(&self) -> Option<f64> {
         (self.failure.is_none() && self.error.is_finite() && self.error >= self.reference_error)
             .then_some(self.error)
+    }
+
+    /// The tolerance proportionality of a tolerance-driven run: its resolved error at T over
+    /// its tolerance.
+    pub fn proportionality(&self) -> Option<f64> {
+        Some(self.resolved_error()? / self.tolerance?)
     }
 
     /// `measured`, `unresolved` (below the reference's estimated error) or `failed`.
@@ -150,11 +205,25 @@ pub fn trade(
     let mut unavailable = Vec::new();
     let mut inapplicable = Vec::new();
     for m in candidates() {
-        for h in steps_of(&m, ladder, scene.duration) {
+        for run in runs_of(&m, ladder, scene.duration) {
+            let tolerance = match run {
+                Run::Step(_) => None,
+                Run::Tolerance(t) => Some(Tolerance::uniform(t).map_err(|e| SimError::Build {
+                    what: m.to_string(),
+                    message: e.to_string(),
+                })?),
+            };
             let mut best: Option<Result<Timed, SimError>> = None;
             let mut info = None;
             for _ in 0..repeats.max(1) {
-                let mut sim = match build(&scene.system, &m, scene.reconstruct, &scene.solver) {
+                let built = build_with(
+                    &scene.system,
+                    &m,
+                    scene.reconstruct,
+                    &scene.solver,
+                    tolerance,
+                );
+                let mut sim = match built {
                     Ok(s) => s,
                     Err(SimError::NotYetAvailable { .. }) => break,
                     Err(SimError::Inapplicable { why, .. }) => {
@@ -164,7 +233,10 @@ pub fn trade(
                     Err(e) => return Err(e),
                 };
                 info = Some(sim.info());
-                let t = timed_run(sim.as_mut(), scene.duration, h);
+                let t = match run {
+                    Run::Step(h) => timed_run(sim.as_mut(), scene.duration, h),
+                    Run::Tolerance(_) => timed_adaptive_run(sim.as_mut(), scene.duration),
+                };
                 best = Some(match (best, t) {
                     (Some(Ok(b)), Ok(t)) if b.stepping <= t.stepping => Ok(b),
                     (_, t) => t,
@@ -179,10 +251,19 @@ pub fn trade(
                 }
                 break;
             };
+            let (h, tolerance) = match run {
+                Run::Step(h) => (h, None),
+                Run::Tolerance(tol) => (f64::NAN, Some(tol)),
+            };
             let row = match result {
                 Ok(t) => TradeRow {
                     method: m.clone(),
-                    h,
+                    h: if tolerance.is_some() {
+                        scene.duration / t.steps as f64
+                    } else {
+                        h
+                    },
+                    tolerance,
                     steps: t.steps,
                     ns_per_step: t.stepping.as_nanos() as f64 / t.steps as f64,
                     seconds: t.stepping.as_secs_f64(),
@@ -197,6 +278,7 @@ pub fn trade(
                 Err(e) => TradeRow {
                     method: m.clone(),
                     h,
+                    tolerance,
                     steps: 0,
                     ns_per_step: f64::NAN,
                     seconds: f64::NAN,
@@ -261,7 +343,7 @@ pub fn fitted_order(rows: &[&TradeRow], reference_error: f64) -> Option<f64> {
 /// Table header, fixed width.
 pub fn table_header() -> String {
     format!(
-        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11} {:>11}",
+        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11} {:>11} {:>9} {:>9}",
         "method",
         "tau",
         "theta",
@@ -272,7 +354,9 @@ pub fn table_header() -> String {
         "error(T)",
         "max|dE/E|",
         "max|dC/C|",
-        "max|dJ|/|J|"
+        "max|dJ|/|J|",
+        "tolerance",
+        "err/tol"
     )
 }
 
@@ -289,14 +373,18 @@ pub fn table_line(r: &TradeRow) -> String {
     match &r.failure {
         Some(f) => format!("{head} failed: {f}"),
         None => format!(
-            "{head} {:>10} {:>11.1} {:>11} {:>11.3e} {:>11} {:>11}",
+            "{head} {:>10} {:>11.1} {:>11} {:>11.3e} {:>11} {:>11} {:>9} {:>9}",
             r.steps,
             r.ns_per_step,
             r.resolved_error()
                 .map_or_else(|| "unresolved".into(), |e| format!("{e:.3e}")),
             r.max_energy_error,
             optional(r.max_casimir_error),
-            optional(r.max_momentum_map_error)
+            optional(r.max_momentum_map_error),
+            r.tolerance
+                .map_or_else(|| "-".into(), |t| format!("{t:.0e}")),
+            r.proportionality()
+                .map_or_else(|| "-".into(), |p| format!("{p:.2e}"))
         ),
     }
 }
@@ -309,21 +397,26 @@ fn optional(x: Option<f64>) -> String {
 /// The rows as CSV; a measure that does not apply (or of a failed run) is an empty cell. The
 /// `error` cell holds the error at T only where it is resolved; `error_status` says `measured`,
 /// `unresolved` (below `reference_error`, the reference's estimated error: the cell is empty) or
-/// `failed`.
+/// `failed`. `tolerance` is the tolerance of a tolerance-driven run (empty for fixed steps, whose
+/// `h` is the step; a tolerance-driven run's `h` is its mean step); `geometric` is `true` or
+/// `false` as [`crate::methods::geometric`] reads the method's own `MethodInfo` (empty when the
+/// method was never built).
 pub fn to_csv(rows: &[TradeRow]) -> String {
     let mut s = String::from(
-        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,error_status,\
-         reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,failure\n",
+        "method,tau,theta,composition,tolerance,h,steps,ns_per_step,seconds,error,error_status,\
+         reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,geometric,\
+         failure\n",
     );
     let cell = |x: Option<f64>| x.map_or_else(String::new, |v| Cell(v).to_string());
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.method.method_label(),
             r.method.tau_label(),
             r.method.theta_label(),
             r.method.composition_label(),
+            cell(r.tolerance),
             Cell(r.h),
             r.steps,
             Cell(r.ns_per_step),
@@ -334,6 +427,8 @@ pub fn to_csv(rows: &[TradeRow]) -> String {
             Cell(r.max_energy_error),
             cell(r.max_casimir_error),
             cell(r.max_momentum_map_error),
+            r.info
+                .map_or_else(String::new, |i| geometric(&i).to_string()),
             r.failure.as_deref().unwrap_or("").replace(',', ";")
         );
     }
@@ -458,7 +553,7 @@ pub fn fit_to_limits(
 /// `integrators::MethodInfo` (effective for a processed method), e.g.
 /// `processed blanes-casas-murua-6-11 ∘ splitting — order 6, explicit`.
 pub fn curve_label(m: &MethodSpec, info: Option<MethodInfo>) -> String {
-    match info {
+    let label = match info {
         Some(i) if i.order == MethodInfo::EXACT => format!("{m} — exact"),
         Some(i) => format!(
             "{m} — order {}, {}",
@@ -466,6 +561,24 @@ pub fn curve_label(m: &MethodSpec, info: Option<MethodInfo>) -> String {
             if i.explicit { "explicit" } else { "implicit" }
         ),
         None => m.to_string(),
+    };
+    if tolerance_driven(m) {
+        format!(
+            "{label}, tolerances {:.0e} … {:.0e}",
+            TOLERANCES[0],
+            TOLERANCES[TOLERANCES.len() - 1]
+        )
+    } else {
+        label
+    }
+}
+
+/// A run as the summaries name it: `h = 1.000e-2`, or `tolerance = 1e-8` for a tolerance-driven
+/// run.
+pub fn run_label(r: &TradeRow) -> String {
+    match r.tolerance {
+        Some(t) => format!("tolerance = {t:.0e}"),
+        None => format!("h = {:.3e}", r.h),
     }
 }
 
@@ -588,7 +701,7 @@ pub fn write_outputs(
                 Some((
                     r.seconds,
                     y,
-                    format!("≤ {target:.0e}: {} h = {:.3e}", r.method, r.h),
+                    format!("≤ {target:.0e}: {} {}", r.method, run_label(r)),
                 ))
             })
             .collect(),
@@ -627,6 +740,7 @@ mod tests {
             max_momentum_map_error: None,
             failure: None,
             info: None,
+            tolerance: None,
         }
     }
 
@@ -733,5 +847,55 @@ mod tests {
         assert_eq!(steps_of(&exact, &ladder, 10.0), [10.0, 0.1, 0.05]);
         let rk4 = MethodSpec::plain(MethodId::Rk4);
         assert_eq!(steps_of(&rk4, &ladder, 10.0), ladder);
+    }
+
+    /// The CSV has a `tolerance` column (empty for fixed steps) and a `geometric` column read
+    /// from each method's own `MethodInfo`: on the free body the embedded pairs and the RK
+    /// baselines are not geometric, the Lie–Poisson and splitting methods are.
+    #[test]
+    fn the_csv_names_tolerances_and_reads_geometric_from_the_descriptors() {
+        use crate::methods::MethodId;
+        let scene = Scene::default_scene(Default::default()).unwrap();
+        let mut rows = Vec::new();
+        for m in candidates() {
+            let Ok(sim) = build(&scene.system, &m, true, &scene.solver) else {
+                continue;
+            };
+            let mut r = row(0.1, 1e-3);
+            r.method = m.clone();
+            r.info = Some(sim.info());
+            r.tolerance = tolerance_driven(&m).then_some(1e-8);
+            rows.push(r);
+        }
+        let csv = to_csv(&rows);
+        let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+        let col = |name: &str| header.iter().position(|c| *c == name).unwrap();
+        let (tol, geo, method) = (col("tolerance"), col("geometric"), col("method"));
+        let mut seen = std::collections::HashMap::new();
+        for (line, r) in csv.lines().skip(1).zip(&rows) {
+            let cells: Vec<&str> = line.split(',').collect();
+            assert_eq!(cells.len(), header.len(), "{line}");
+            assert_eq!(
+                cells[geo],
+                geometric(&r.info.unwrap()).to_string(),
+                "{line}"
+            );
+            assert_eq!(
+                cells[tol].is_empty(),
+                !tolerance_driven(&r.method),
+                "{line}"
+            );
+            seen.insert(cells[method].to_string(), cells[geo].to_string());
+        }
+        for (name, want) in [
+            (MethodId::Dop853.name(), "false"),
+            (MethodId::RkmkDopri5.name(), "false"),
+            (MethodId::Rk4.name(), "false"),
+            (MethodId::LiePoisson.name(), "true"),
+            (MethodId::Splitting.name(), "true"),
+            (MethodId::Exact.name(), "true"),
+        ] {
+            assert_eq!(seen.get(name).map(String::as_str), Some(want), "{name}");
+        }
     }
 }

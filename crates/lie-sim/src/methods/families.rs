@@ -56,3 +56,8 @@ pub const RUNGE_KUTTA: Family = Family {
     name: "rk4/rkmk4",
     color: RGBColor(214, 39, 40),
 };
+/// The embedded pairs run to a tolerance.
+pub const ADAPTIVE: Family = Family {
+    name: "tolerance-driven",
+    color: RGBColor(188, 189, 34),
+};

@@ -28,7 +28,7 @@ use crate::taus::TauKind;
 use families::Family;
 use integrators::processing::ProcessingScheme;
 use integrators::splitting::SplittingScheme;
-use integrators::{CompositionScheme, SolverConfig};
+use integrators::{CompositionScheme, MethodInfo, SolverConfig};
 use options::Options;
 use row::{Row, TauRule, SYMMETRIC_THETA};
 use serde::Deserialize;
@@ -91,6 +91,10 @@ methods! {
     Splitting => splitting,
     KineticKick => kinetic_kick,
     Exact => exact,
+    RkmkDopri5 => rkmk_dopri5,
+    RkmkDop853 => rkmk_dop853,
+    Dopri5 => dopri5,
+    Dop853 => dop853,
 }
 
 impl MethodId {
@@ -297,6 +301,14 @@ pub fn candidates() -> Vec<MethodSpec> {
         }
     }
     v
+}
+
+/// Whether a method is *geometric*: it keeps some structure of the flow beyond g on G — it is
+/// symmetric, or a Poisson map, or keeps the Casimirs, the momentum map or the energy — as its
+/// `MethodInfo` says (g on G alone is what the plain baselines keep too, by renormalising or by
+/// stepping on the group).
+pub fn geometric(info: &MethodInfo) -> bool {
+    info.symmetric || info.poisson || info.casimirs || info.momentum_map || info.energy
 }
 
 /// The family a configuration is drawn in: [`families::PROCESSED`] for a processed method, its

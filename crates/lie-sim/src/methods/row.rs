@@ -17,12 +17,14 @@ pub enum TauRule {
     Only(TauKind),
 }
 
-/// How a method steps. Every method today takes a fixed step h; error-controlled methods will take
-/// a tolerance (rtol, atol) instead.
+/// How a method steps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stepping {
     /// A fixed step h (`integrator.step`).
     Fixed,
+    /// Steps chosen by the error estimate of an embedded pair to meet a tolerance
+    /// (`integrator.tolerance`, or `rtol` and `atol`; `integrators::adaptive::Adaptive`).
+    Tolerance,
 }
 
 /// The batched method (SIMD, lanes = bodies; the `batch` crate) that `lie-sim sweep` steps a

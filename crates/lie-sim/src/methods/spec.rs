@@ -22,8 +22,14 @@ pub struct RawIntegrator {
     pub tau: Option<TauKind>,
     /// θ ∈ [0, 1].
     pub theta: Option<f64>,
-    /// Step h > 0.
-    pub step: f64,
+    /// Step h > 0, for a fixed-step method (`crate::stepping`).
+    pub step: Option<f64>,
+    /// The tolerance of a tolerance-driven method: rtol = atol (`crate::stepping`).
+    pub tolerance: Option<f64>,
+    /// Its relative tolerance (scipy's `rtol`), with `atol`.
+    pub rtol: Option<f64>,
+    /// Its absolute tolerance (scipy's `atol`), with `rtol`.
+    pub atol: Option<f64>,
     /// Duration T > 0.
     pub duration: f64,
     /// Integrate the group element too (default true).
@@ -31,7 +37,7 @@ pub struct RawIntegrator {
     /// The iteration of the implicit solver (default: the integrators crate's).
     pub solver: Option<SolverChoice>,
     /// Tolerance of the implicit solver (default: the integrators crate's).
-    pub tolerance: Option<f64>,
+    pub solver_tolerance: Option<f64>,
     /// Iteration limit of the implicit solver (default: the integrators crate's).
     pub max_iterations: Option<usize>,
     /// Composition scheme around a symmetric base method (any name
@@ -309,11 +315,14 @@ mod tests {
                 method: s.method,
                 tau: s.tau,
                 theta: s.theta,
-                step: 0.1,
+                step: Some(0.1),
+                tolerance: None,
+                rtol: None,
+                atol: None,
                 duration: 1.0,
                 reconstruct: None,
                 solver: None,
-                tolerance: None,
+                solver_tolerance: None,
                 max_iterations: None,
                 composition: s.composition.as_ref().map(|c| c.name().to_string()),
                 splitting: s.splitting.as_ref().map(|c| c.name().to_string()),

@@ -257,8 +257,9 @@ fn trade_writes_a_work_precision_table_and_plot() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "method,tau,theta,composition,h,steps,ns_per_step,seconds,error,error_status,\
-         reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,failure"
+        "method,tau,theta,composition,tolerance,h,steps,ns_per_step,seconds,error,error_status,\
+         reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,geometric,\
+         failure"
     );
     // Every configuration the registry lists as applying to the free body (`lie-sim methods
     // --markdown`: lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, their compositions,
@@ -276,7 +277,25 @@ fn trade_writes_a_work_precision_table_and_plot() {
         .count();
     assert!(applicable > 50, "{listing}");
     let rows: Vec<&str> = lines.collect();
-    assert_eq!(rows.len(), 2 * applicable + 1, "{text}");
+    // The tolerance-driven configurations (a `tolerance` cell) run the 10 tolerances 1e-3 …
+    // 1e-12 instead of the steps.
+    let to_tolerance: Vec<&str> = rows
+        .iter()
+        .copied()
+        .filter(|r| !r.split(',').nth(4).unwrap().is_empty())
+        .collect();
+    let mut adaptive: Vec<&str> = to_tolerance
+        .iter()
+        .map(|r| r.split(',').next().unwrap())
+        .collect();
+    adaptive.dedup();
+    assert_eq!(adaptive, ["rkmk-dopri5", "rkmk-dop853", "dopri5", "dop853"], "{text}");
+    assert_eq!(to_tolerance.len(), 10 * adaptive.len(), "{text}");
+    assert_eq!(
+        rows.len() - to_tolerance.len(),
+        2 * (applicable - adaptive.len()) + 1,
+        "{text}"
+    );
     for (prefix, n) in [
         ("modified-lie-poisson,cayley,0.5,order-4,", 2),
         ("modified-lie-poisson,exp,0,order-6,", 2),

@@ -1,0 +1,75 @@
+//! `dop853`: the DOP853 (8(5,3)) pair on (unit quaternion, Π), renormalised each step, run to a
+//! tolerance (`integrators::baselines::QuaternionDop853`): what a scipy `solve_ivp(method="DOP853")` user
+//! runs.
+
+use super::families::{self, Family};
+use super::options::Options;
+use super::row::{Row, Stepping, TauRule, Takes, Trade};
+use super::wrap::BuildError;
+use crate::model::{Alg, Model, So3Visitor};
+use crate::plot::Marker;
+use crate::sim::Boxed;
+use integrators::baselines::QuaternionDop853;
+use integrators::{SolverConfig, System};
+use lie_groups::{LieGroup, So3};
+use nalgebra::Vector3;
+
+/// The row.
+pub const ROW: Row = Row {
+    name: "dop853",
+    summary: "DOP853 on (unit quaternion, Π), renormalised each step, steps to a tolerance \
+              (scipy's DOP853; a baseline; SO(3))",
+    takes: Takes {
+        tau: TauRule::None,
+        theta: false,
+        coefficients: false,
+        modified: false,
+        wrappers: false,
+        stepping: Stepping::Tolerance,
+    },
+    trade: Trade {
+        thetas: &[],
+        compositions: &[],
+        modified: &[],
+        processing: false,
+        one_step: false,
+    },
+    family,
+    second: false,
+    marker: Some(Marker::Diamond),
+};
+
+fn family(_: &Options) -> &'static Family {
+    &families::ADAPTIVE
+}
+
+/// Builds it on a system on SO(3).
+pub fn build<M: Model>(
+    _options: &Options,
+    _config: &SolverConfig,
+    model: &M,
+    mu0: Alg<M::G>,
+    g0: Option<M::G>,
+) -> Result<Boxed<M::G>, BuildError> {
+    model.so3(Quaternions, mu0, g0).map_err(|m| {
+        BuildError::unavailable(
+            "dop853 integrates quaternions, so only systems on SO(3); use rkmk-dop853 on other \
+             groups",
+            m,
+        )
+    })?
+}
+
+struct Quaternions;
+
+impl So3Visitor for Quaternions {
+    type Out<G: LieGroup> = Result<Boxed<G>, BuildError>;
+    fn visit<S: System<So3> + Clone + Sync + 'static>(
+        self,
+        system: &S,
+        mu0: Vector3<f64>,
+        g0: Option<So3>,
+    ) -> Self::Out<So3> {
+        Ok(Boxed::pair(QuaternionDop853::new(system.clone(), mu0, g0)?))
+    }
+}
