@@ -9,7 +9,7 @@
 
 use crate::build::{build, probe};
 use crate::error::SimError;
-use crate::methods::row::TauRule;
+use crate::methods::row::{Stepping, TauRule};
 use crate::methods::wrap::BuildError;
 use crate::methods::{candidates, MethodId, MethodSpec};
 use crate::scene::{Overrides, Scene};
@@ -39,6 +39,9 @@ pub fn takes(m: MethodId) -> String {
     }
     if t.wrappers {
         v.push("composition, processing (symmetric base)".into());
+    }
+    if t.stepping == Stepping::Tolerance {
+        v.push("tolerance (or rtol and atol) instead of step".into());
     }
     if v.is_empty() {
         "—".into()

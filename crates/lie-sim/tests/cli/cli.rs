@@ -289,7 +289,11 @@ fn trade_writes_a_work_precision_table_and_plot() {
         .map(|r| r.split(',').next().unwrap())
         .collect();
     adaptive.dedup();
-    assert_eq!(adaptive, ["rkmk-dopri5", "rkmk-dop853", "dopri5", "dop853"], "{text}");
+    assert_eq!(
+        adaptive,
+        ["rkmk-dopri5", "rkmk-dop853", "dopri5", "dop853"],
+        "{text}"
+    );
     assert_eq!(to_tolerance.len(), 10 * adaptive.len(), "{text}");
     assert_eq!(
         rows.len() - to_tolerance.len(),
