@@ -393,10 +393,12 @@ impl Job for Tolerances<'_> {
     }
 }
 
-/// Every tolerance-driven row, on every system it applies to: its error at T falls as the
-/// tolerance falls (a fitted order against the tolerance means nothing: the controller picks
+/// Every tolerance-driven row, on every system it applies to: its error at T is smallest at the
+/// tightest tolerance (a fitted order against the tolerance means nothing: the controller picks
 /// the steps), and stays within a factor 10⁴ of the tolerance at 1e-10 — loose, because a local
-/// tolerance does not bound the global error: `trade` reports the proportionality per run.
+/// tolerance does not bound the global error: `trade` reports the proportionality per run. The
+/// looser two are not ordered: over this short horizon DOP853 at 1e-4 takes a few long steps
+/// whose errors happen to cancel (4.4e-10 on the free body, against 1.5e-8 at 1e-7).
 #[test]
 fn every_tolerance_driven_method_is_more_accurate_at_a_tighter_tolerance() {
     let specs = candidates();
@@ -426,7 +428,7 @@ fn every_tolerance_driven_method_is_more_accurate_at_a_tighter_tolerance() {
     assert!(measured.len() >= 2 * SystemKind::ALL.len(), "{measured:?}");
     let wrong: Vec<String> = measured
         .iter()
-        .filter(|(_, [a, b, c])| !(a > b && b > c && *c < 1e4 * LADDER[2]))
+        .filter(|(_, [a, b, c])| !(c < a && c < b && *c < 1e4 * LADDER[2]))
         .map(|(what, e)| format!("{what}: errors {e:?} at tolerances {LADDER:?}"))
         .collect();
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));

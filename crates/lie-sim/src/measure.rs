@@ -12,7 +12,6 @@ use crate::error::SimError;
 use crate::invariants::Monitor;
 use crate::scene::steps_for;
 use crate::sim::Simulation;
-use integrators::adaptive::Stats;
 use std::time::{Duration, Instant};
 
 /// Steps between two energy samples (and two clock reads) in a timed run.
@@ -61,8 +60,6 @@ pub struct Timed {
     pub state: FinalState,
     /// Steps taken (accepted, for a tolerance-driven run).
     pub steps: u64,
-    /// A tolerance-driven run's accepted and rejected steps and smallest and largest step.
-    pub stats: Option<Stats>,
     /// Time spent in `step` (the clock is read every [`ENERGY_SAMPLE`] steps).
     pub stepping: Duration,
     /// Maximum relative energy error over the samples.
@@ -139,7 +136,6 @@ fn timed(sim: &mut dyn Simulation, duration: f64, h: Option<f64>) -> Result<Time
     Ok(Timed {
         state: state.unwrap_or_else(|| FinalState::of(sim)),
         steps: k,
-        stats: sim.stats(),
         stepping,
         max_energy_error: monitor.energy,
         max_casimir_error: monitor.casimir,
