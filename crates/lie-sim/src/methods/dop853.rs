@@ -37,6 +37,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: Some(Marker::Diamond),
+    batch: None,
 };
 
 fn family(_: &Options) -> &'static Family {

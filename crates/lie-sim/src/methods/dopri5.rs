@@ -37,6 +37,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: Some(Marker::Circle),
+    batch: None,
 };
 
 fn family(_: &Options) -> &'static Family {

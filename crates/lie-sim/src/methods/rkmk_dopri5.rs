@@ -35,6 +35,7 @@ pub const ROW: Row = Row {
     family,
     second: true,
     marker: Some(Marker::Circle),
+    batch: None,
 };
 
 fn family(_: &Options) -> &'static Family {
