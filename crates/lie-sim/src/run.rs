@@ -311,7 +311,7 @@ pub fn run_simulation(
         if events.is_empty() && !stride_row && !time_row {
             since_row += 1;
             if let Some(b) = &bar {
-                if k % tick == 0 {
+                if k.is_multiple_of(tick) {
                     b.set_position(position(k, sim.time()));
                 }
             }
@@ -373,7 +373,7 @@ pub fn run_simulation(
             }
         }
         if let Some(b) = &bar {
-            if k % tick == 0 {
+            if k.is_multiple_of(tick) {
                 b.set_position(position(k, sim.time()));
             }
         }
