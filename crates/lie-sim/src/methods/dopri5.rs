@@ -6,13 +6,11 @@ use super::families::{self, Family};
 use super::options::Options;
 use super::row::{Row, Stepping, TauRule, Takes, Trade};
 use super::wrap::BuildError;
-use crate::model::{Alg, Model, So3Visitor};
+use crate::model::{Alg, Model};
 use crate::plot::Marker;
 use crate::sim::Boxed;
-use integrators::baselines::QuaternionDopri5;
-use integrators::{SolverConfig, System};
-use lie_groups::{LieGroup, So3};
-use nalgebra::Vector3;
+use integrators::adaptive::DormandPrince54;
+use integrators::SolverConfig;
 
 /// The row.
 pub const ROW: Row = Row {
@@ -52,25 +50,5 @@ pub fn build<M: Model>(
     mu0: Alg<M::G>,
     g0: Option<M::G>,
 ) -> Result<Boxed<M::G>, BuildError> {
-    model.so3(Quaternions, mu0, g0).map_err(|m| {
-        BuildError::unavailable(
-            "dopri5 integrates quaternions, so only systems on SO(3); use rkmk-dopri5 on other \
-             groups",
-            m,
-        )
-    })?
-}
-
-struct Quaternions;
-
-impl So3Visitor for Quaternions {
-    type Out<G: LieGroup> = Result<Boxed<G>, BuildError>;
-    fn visit<S: System<So3> + Clone + Sync + 'static>(
-        self,
-        system: &S,
-        mu0: Vector3<f64>,
-        g0: Option<So3>,
-    ) -> Self::Out<So3> {
-        Ok(Boxed::pair(QuaternionDopri5::new(system.clone(), mu0, g0)?))
-    }
+    super::quaternion_pair::build::<DormandPrince54, 7, M>(ROW.name, model, mu0, g0)
 }

@@ -17,6 +17,7 @@
 
 pub mod families;
 pub mod options;
+mod quaternion_pair;
 pub mod row;
 pub mod spec;
 pub mod wrap;
