@@ -12,8 +12,9 @@
 //! on how it is run. The path is part of the sweep's fingerprint: shards of the batched and the
 //! scalar path are not merged. `lie-sim sweep --scalar` takes the scalar path.
 //!
-//! **Bounded memory.** The members go through in chunks of [`CHUNK`] bodies (their state, a few
-//! hundred bytes each), so the batch's memory does not grow with N.
+//! **Memory.** The members go through in chunks of [`CHUNK`] bodies (their state, a few hundred
+//! bytes each), so the batch's state does not grow with N; the shard's initial momenta and its
+//! rows are kept until the CSV is written, as on the scalar path.
 
 use crate::methods::row::Batched;
 use crate::methods::MethodSpec;
