@@ -148,6 +148,26 @@ const EXACT: &[&str] = &["exact", "kinetic-kick", "processed-kinetic-kick"];
 const ERROR_TARGETS: &[f64] = &[1e-4, 1e-6, 1e-8, 1e-10];
 const ENERGY_TARGETS: &[f64] = &[1e-3, 1e-5, 1e-7, 1e-9];
 
+/// `lie-sim sweep examples/scenes/sweep-rotors.toml --threads 1` with more arguments, as the
+/// cargo arguments of one run of the `sweep-batched` generator.
+macro_rules! sweep_rotors {
+    ($($arg:literal),* $(,)?) => {
+        &[
+            "run",
+            "--release",
+            "-q",
+            "-p",
+            "lie-sim",
+            "--",
+            "sweep",
+            "examples/scenes/sweep-rotors.toml",
+            "--threads",
+            "1",
+            $($arg),*
+        ]
+    };
+}
+
 /// A vehicle scene's trade on its automatic ladder: its run and its summary in work-precision.md.
 macro_rules! vehicle {
     ($name:literal, $csv:literal, $args:expr, $takes:literal, $run:literal, $summary:literal $(,)?) => {
@@ -1334,72 +1354,25 @@ pub fn all() -> Vec<Generator> {
             takes: "1 min",
             how: How::Output(Output {
                 runs: &[
-                    &[
-                        "run",
-                        "--release",
-                        "-q",
-                        "-p",
-                        "lie-sim",
-                        "--",
-                        "sweep",
-                        "examples/scenes/sweep-rotors.toml",
-                        "--threads",
-                        "1",
-                        "--out",
-                        "target/lie-sim/rotors-batched.csv",
-                    ],
-                    &[
-                        "run",
-                        "--release",
-                        "-q",
-                        "-p",
-                        "lie-sim",
-                        "--",
-                        "sweep",
-                        "examples/scenes/sweep-rotors.toml",
-                        "--threads",
-                        "1",
-                        "--scalar",
-                        "--out",
-                        "target/lie-sim/rotors-scalar.csv",
-                    ],
-                    &[
-                        "run",
-                        "--release",
-                        "-q",
-                        "-p",
-                        "lie-sim",
-                        "--",
-                        "sweep",
-                        "examples/scenes/sweep-rotors.toml",
-                        "--threads",
-                        "1",
+                    sweep_rotors!("--out", "target/lie-sim/rotors-batched.csv"),
+                    sweep_rotors!("--scalar", "--out", "target/lie-sim/rotors-scalar.csv"),
+                    sweep_rotors!(
                         "--count",
                         "20000",
                         "--duration",
                         "100",
                         "--out",
-                        "target/lie-sim/rotors-long-batched.csv",
-                    ],
-                    &[
-                        "run",
-                        "--release",
-                        "-q",
-                        "-p",
-                        "lie-sim",
-                        "--",
-                        "sweep",
-                        "examples/scenes/sweep-rotors.toml",
-                        "--threads",
-                        "1",
+                        "target/lie-sim/rotors-long-batched.csv"
+                    ),
+                    sweep_rotors!(
                         "--count",
                         "20000",
                         "--duration",
                         "100",
                         "--scalar",
                         "--out",
-                        "target/lie-sim/rotors-long-scalar.csv",
-                    ],
+                        "target/lie-sim/rotors-long-scalar.csv"
+                    ),
                 ],
                 at: At {
                     file: "docs/ensembles.md",
