@@ -60,7 +60,14 @@ impl Row {
         self.number("tolerance")
     }
 
-    /// `method [composition] [τ = …] [θ = …], h = …` as the tables name a run.
+    /// The ε of a run with reversible variable steps (`None` otherwise, and in a CSV written
+    /// before lie-sim had the column).
+    pub fn epsilon(&self) -> Option<f64> {
+        self.number("epsilon")
+    }
+
+    /// `method [composition] [τ = …] [θ = …], h = …` as the tables name a run (`tolerance = …`
+    /// or `reversible steps ε = …` for variable steps).
     pub fn label(&self) -> String {
         let mut parts = vec![self.method().to_string()];
         let composition = self.get("composition");
@@ -73,9 +80,10 @@ impl Row {
                 parts.push(format!("{symbol} = {v}"));
             }
         }
-        match self.tolerance() {
-            Some(t) => format!("{}, tolerance = {}", parts.join(" "), short(t)),
-            None => format!("{}, h = {}", parts.join(" "), short(self.h())),
+        match (self.tolerance(), self.epsilon()) {
+            (Some(t), _) => format!("{}, tolerance = {}", parts.join(" "), short(t)),
+            (None, Some(e)) => format!("{}, reversible steps ε = {}", parts.join(" "), short(e)),
+            (None, None) => format!("{}, h = {}", parts.join(" "), short(self.h())),
         }
     }
 

@@ -2,14 +2,16 @@
 //! ([`crate::systems`]), the registry builds the method on it ([`crate::methods::build`]), and
 //! the result is a [`Simulation`] — or why the method does not apply.
 
+use crate::driven::DrivenSim;
+use crate::driver::PairDriver;
 use crate::error::SimError;
 use crate::methods::spec::SolverOptions;
 use crate::methods::wrap::BuildError;
 use crate::methods::{build as build_method, MethodSpec};
 use crate::model::{Alg, Job, Model};
-use crate::sim::{Adapter, PairSim, Simulation};
+use crate::sim::{Adapter, Simulation};
+use crate::stepping::VariableSteps;
 use crate::systems::{System, SystemKind};
-use integrators::adaptive::Tolerance;
 use integrators::System as _;
 
 /// Builds the simulation a scene names: its system with its initial state (g₀ only when
@@ -25,15 +27,17 @@ pub fn build(
     build_with(system, method, reconstruct, solver, None)
 }
 
-/// As [`build`], run to `tolerance` when one is given: the method's embedded pair driven by the
-/// library's controller ([`PairSim`]). A method without an error estimate refuses a tolerance
-/// ([`SimError::Build`]; a scene never names one, `crate::stepping`).
+/// As [`build`], with steps chosen as the run goes when `variable` says so
+/// ([`crate::driven`]): to a tolerance, the method's embedded pair driven by the library's error
+/// controller; with ε, the symmetric method driven by the reversible step-density controller. A
+/// method without an error estimate refuses a tolerance, one that is not symmetric refuses ε
+/// ([`SimError::Build`], naming why).
 pub fn build_with(
     system: &System,
     method: &MethodSpec,
     reconstruct: bool,
     solver: &SolverOptions,
-    tolerance: Option<Tolerance>,
+    variable: Option<VariableSteps>,
 ) -> Result<Box<dyn Simulation>, SimError> {
     system.dispatch(
         reconstruct,
@@ -41,7 +45,7 @@ pub fn build_with(
             system: system.kind(),
             method,
             solver,
-            tolerance,
+            variable,
         },
     )
 }
@@ -80,6 +84,12 @@ pub fn characteristic_rate(system: &System, reconstruct: bool) -> Result<f64, Si
     system.dispatch(reconstruct, Rate)
 }
 
+/// The step density ρ(y₀) > 0 at the scene's initial state (`integrators::System::step_density`
+/// of its model): the reversible variable steps start at h = ε/ρ(y₀).
+pub fn step_density(system: &System, reconstruct: bool) -> Result<f64, SimError> {
+    system.dispatch(reconstruct, Density)
+}
+
 /// The refusal of `method` on a system of `kind` as an error of the run.
 pub fn refusal(kind: SystemKind, method: &MethodSpec, e: BuildError) -> SimError {
     let what = format!("{kind} with {method}");
@@ -109,7 +119,7 @@ struct Single<'a> {
     system: SystemKind,
     method: &'a MethodSpec,
     solver: &'a SolverOptions,
-    tolerance: Option<Tolerance>,
+    variable: Option<VariableSteps>,
 }
 
 impl Job for Single<'_> {
@@ -122,20 +132,37 @@ impl Job for Single<'_> {
     ) -> Result<Self::Out, SimError> {
         let integrator = build_method(self.method, &self.solver.config(), model, mu0, g0)
             .map_err(|e| refusal(self.system, self.method, e))?;
-        let Some(tolerance) = self.tolerance else {
-            return Ok(Box::new(Adapter::new(integrator, model.system().clone())));
+        let system = model.system().clone();
+        let what = || format!("{} with {}", self.system, self.method);
+        let driver = match self.variable {
+            None => return Ok(Box::new(Adapter::new(integrator, system))),
+            Some(VariableSteps::Tolerance(tolerance)) => match integrator.into_pair() {
+                Ok(pair) => Box::new(PairDriver::new(pair, tolerance)) as _,
+                Err(_) => {
+                    return Err(SimError::Build {
+                        what: what(),
+                        message: "it has no error estimate to run to a tolerance".into(),
+                    })
+                }
+            },
+            Some(VariableSteps::Reversible(epsilon)) => match integrator.into_reversible(epsilon) {
+                Ok(driver) => driver.map_err(|e| SimError::Build {
+                    what: what(),
+                    message: e.to_string(),
+                })?,
+                Err(_) => {
+                    return Err(SimError::Build {
+                        what: what(),
+                        message: "it is not symmetric (Φ_−h ≠ Φ_h⁻¹) on this system, so its \
+                                  variable steps cannot be reversible (epsilon is for the \
+                                  splittings, their compositions, kinetic-kick, and θ = ½); a \
+                                  processed method takes fixed steps only"
+                            .into(),
+                    })
+                }
+            },
         };
-        match integrator.into_pair() {
-            Ok(pair) => Ok(Box::new(PairSim::new(
-                pair,
-                model.system().clone(),
-                tolerance,
-            ))),
-            Err(_) => Err(SimError::Build {
-                what: format!("{} with {}", self.system, self.method),
-                message: "it has no error estimate to run to a tolerance".into(),
-            }),
-        }
+        Ok(Box::new(DrivenSim::new(driver, system)))
     }
 }
 
@@ -164,6 +191,16 @@ impl Job for ProbeJob<'_> {
             has_potential,
             built,
         })
+    }
+}
+
+/// The [`Job`] of [`step_density`].
+struct Density;
+
+impl Job for Density {
+    type Out = f64;
+    fn run<M: Model>(self, model: &M, mu0: Alg<M::G>, g0: Option<M::G>) -> Result<f64, SimError> {
+        Ok(model.system().step_density(&mu0, g0.as_ref()))
     }
 }
 

@@ -27,13 +27,14 @@
 //! and measured error. When nothing meets the target within the budget, it says so, with the best
 //! value reached.
 
-use crate::build::{build, build_with};
+use crate::build::{build, build_with, step_density};
 use crate::error::SimError;
 use crate::invariants::relative_error;
 use crate::measure::{timed_adaptive_run, timed_run};
 use crate::methods::{candidates, MethodSpec};
 use crate::reference::{meets, reference, Options as ReferenceOptions};
 use crate::scene::{steps_for, Scene};
+use crate::stepping::VariableSteps;
 use crate::trade::tolerance_driven;
 use integrators::adaptive::Tolerance;
 use std::time::{Duration, Instant};
@@ -52,10 +53,11 @@ pub enum Metric {
 pub struct Candidate {
     /// The method.
     pub method: MethodSpec,
-    /// Its step (the duration T for a tolerance-driven run).
+    /// Its step (the duration T for a run with variable steps).
     pub h: f64,
-    /// The tolerance (rtol = atol) of a tolerance-driven run, `None` for fixed steps.
-    pub tolerance: Option<f64>,
+    /// How a run with variable steps chose them (a tolerance, rtol = atol, or reversible steps
+    /// with ε), `None` for fixed steps.
+    pub variable: Option<VariableSteps>,
     /// Stepping time of the whole run.
     pub seconds: f64,
     /// The measured value of the metric.
@@ -63,10 +65,12 @@ pub struct Candidate {
 }
 
 impl Candidate {
-    /// `h = 0.01`, or `tolerance = 1e-8` for a tolerance-driven run.
+    /// `h = 0.01`, `tolerance = 1e-8` for a tolerance-driven run, `epsilon = 0.05` for
+    /// reversible steps.
     pub fn setting(&self) -> String {
-        match self.tolerance {
-            Some(t) => format!("tolerance = {t:e}"),
+        match self.variable {
+            Some(VariableSteps::Tolerance(t)) => format!("tolerance = {:e}", t.rtol),
+            Some(VariableSteps::Reversible(e)) => format!("epsilon = {e}"),
             None => format!("h = {}", self.h),
         }
     }
@@ -143,6 +147,8 @@ pub fn choose(
         None => value <= target,
     };
     let methods = candidates();
+    // Reversible steps run with ε = h ρ(y₀) at the level of step h: they start with that step.
+    let rho0 = step_density(&scene.system, scene.reconstruct)?;
     let mut done = vec![false; methods.len()];
     let mut rows: Vec<Candidate> = Vec::new();
     let mut truncated = false;
@@ -157,23 +163,20 @@ pub fn choose(
                 truncated = true;
                 break 'ladder;
             }
-            let adaptive = tolerance_driven(m);
-            let tolerance = if adaptive {
-                let Some(t) = tolerance_at(level, target) else {
+            let variable = if tolerance_driven(m) {
+                let Some(t) = tolerance_at(level, target).and_then(|t| Tolerance::uniform(t).ok())
+                else {
                     done[k] = true;
                     continue;
                 };
-                Some(t)
+                Some(VariableSteps::Tolerance(t))
+            } else if m.reversible {
+                Some(VariableSteps::Reversible(h * rho0))
             } else {
                 None
             };
-            let built = build_with(
-                &scene.system,
-                m,
-                scene.reconstruct,
-                &scene.solver,
-                tolerance.and_then(|t| Tolerance::uniform(t).ok()),
-            );
+            let adaptive = variable.is_some();
+            let built = build_with(&scene.system, m, scene.reconstruct, &scene.solver, variable);
             let mut sim = match built {
                 Ok(s) => s,
                 Err(_) => {
@@ -203,7 +206,7 @@ pub fn choose(
             rows.push(Candidate {
                 method: m.clone(),
                 h: if adaptive { scene.duration } else { h },
-                tolerance,
+                variable,
                 seconds: run.stepping.as_secs_f64(),
                 value,
             });
@@ -215,7 +218,7 @@ pub fn choose(
         // first) and dropped if a sample between the trade's missed a peak.
         rows.sort_by(|a, b| a.seconds.total_cmp(&b.seconds));
         for r in rows.iter_mut().filter(|r| met(r.value)) {
-            r.value = energy_error_every_step(scene, &r.method, r.h, r.tolerance)?;
+            r.value = energy_error_every_step(scene, &r.method, r.h, r.variable)?;
         }
     }
     let cheapest = |exclude: Option<&MethodSpec>| {
@@ -247,15 +250,15 @@ pub fn choose(
     })
 }
 
-/// max_k |E_k − E₀|/|E₀| over every step of the scene run with `method` at step h, or to
-/// `tolerance` (∞ if a step fails).
+/// max_k |E_k − E₀|/|E₀| over every step of the scene run with `method` at step h, or with
+/// the `variable` steps (∞ if a step fails).
 fn energy_error_every_step(
     scene: &Scene,
     method: &MethodSpec,
     h: f64,
-    tolerance: Option<f64>,
+    variable: Option<VariableSteps>,
 ) -> Result<f64, SimError> {
-    let Some(tolerance) = tolerance else {
+    let Some(variable) = variable else {
         let mut sim = build(&scene.system, method, scene.reconstruct, &scene.solver)?;
         let n = steps_for(scene.duration, h);
         let h_last = scene.duration - (n - 1) as f64 * h;
@@ -269,15 +272,12 @@ fn energy_error_every_step(
         }
         return Ok(worst);
     };
-    let tolerance = Tolerance::uniform(tolerance).map_err(|e| SimError::Choose {
-        message: e.to_string(),
-    })?;
     let mut sim = build_with(
         &scene.system,
         method,
         scene.reconstruct,
         &scene.solver,
-        Some(tolerance),
+        Some(variable),
     )?;
     let e0 = sim.energy();
     let mut worst = 0.0f64;
@@ -319,6 +319,7 @@ pub fn scene_with(text: &str, chosen: &Candidate, duration: f64) -> Result<Strin
         "tolerance",
         "rtol",
         "atol",
+        "epsilon",
         "duration",
     ] {
         it.remove(key);
@@ -344,8 +345,9 @@ pub fn scene_with(text: &str, chosen: &Candidate, duration: f64) -> Result<Strin
         it.insert("modified".into(), true.into());
         it.insert("order".into(), i64::from(order).into());
     }
-    match chosen.tolerance {
-        Some(t) => it.insert("tolerance".into(), t.into()),
+    match chosen.variable {
+        Some(VariableSteps::Tolerance(t)) => it.insert("tolerance".into(), t.rtol.into()),
+        Some(VariableSteps::Reversible(e)) => it.insert("epsilon".into(), e.into()),
         None => it.insert("step".into(), chosen.h.into()),
     };
     it.insert("duration".into(), duration.into());
@@ -371,18 +373,21 @@ mod tests {
         let chosen = Candidate {
             method: MethodSpec::plain(MethodId::Dop853),
             h: 10.0,
-            tolerance: Some(1e-9),
+            variable: Some(VariableSteps::Tolerance(Tolerance::uniform(1e-9).unwrap())),
             seconds: 1.0,
             value: 1e-9,
         };
         let text = scene_with(DEFAULT_SCENE, &chosen, 10.0).unwrap();
         let scene = Scene::parse(&text, "w", "w", Overrides::default()).unwrap();
         assert_eq!(scene.method.method, MethodId::Dop853);
-        assert_eq!(scene.tolerance, Some(Tolerance::uniform(1e-9).unwrap()));
+        assert_eq!(
+            scene.variable,
+            Some(VariableSteps::Tolerance(Tolerance::uniform(1e-9).unwrap()))
+        );
         assert!(!text.contains("step ="), "{text}");
         let fixed = Candidate {
             method: MethodSpec::plain(MethodId::Rk4),
-            tolerance: None,
+            variable: None,
             h: 0.05,
             ..chosen
         };
@@ -393,6 +398,6 @@ mod tests {
             Overrides::default(),
         )
         .unwrap();
-        assert_eq!((scene.tolerance, scene.step), (None, 0.05));
+        assert_eq!((scene.variable, scene.step), (None, 0.05));
     }
 }

@@ -206,7 +206,9 @@ fn unforced(text: &str) -> String {
 
 #[test]
 fn every_method_on_every_system_it_applies_to_is_what_it_says() {
-    let specs = candidates();
+    // A configuration with reversible steps is the same built method as its fixed-step
+    // configuration (measured here); its variable steps: tests/cli/reversible_steps.rs.
+    let specs: Vec<MethodSpec> = candidates().into_iter().filter(|s| !s.reversible).collect();
     let mut measured = Vec::new();
     for &kind in SystemKind::ALL {
         let scene = Scene::parse(

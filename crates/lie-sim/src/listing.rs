@@ -39,6 +39,9 @@ pub fn takes(m: MethodId) -> String {
     }
     if t.wrappers {
         v.push("composition, processing (symmetric base)".into());
+        // The methods `wrap` builds: a symmetric configuration keeps its system as the monitor
+        // of reversible variable steps.
+        v.push("epsilon instead of step (symmetric configurations)".into());
     }
     if t.stepping == Stepping::Tolerance {
         v.push("tolerance (or rtol and atol) instead of step".into());

@@ -41,6 +41,8 @@ mod batched;
 mod bounds;
 mod build;
 mod choose;
+mod driven;
+mod driver;
 mod error;
 mod fields;
 mod forces;
@@ -499,13 +501,18 @@ fn cmd_run(
     } else {
         " (momentum only, no reconstruction)"
     };
-    match (&scene.tolerance, &summary.stats) {
-        (Some(tol), Some(stats)) => {
-            say!(
-                "  tolerance    rtol = {:e}, atol = {:e}",
-                tol.rtol,
-                tol.atol
-            );
+    match (&scene.variable, &summary.stats) {
+        (Some(variable), Some(stats)) => {
+            match variable {
+                stepping::VariableSteps::Tolerance(tol) => say!(
+                    "  tolerance    rtol = {:e}, atol = {:e}",
+                    tol.rtol,
+                    tol.atol
+                ),
+                stepping::VariableSteps::Reversible(epsilon) => {
+                    say!("  epsilon      {epsilon:e} (reversible steps h = ε/ρ, Hairer–Söderlind)")
+                }
+            }
             say!(
                 "  steps        {} accepted, {} rejected, h in [{:.3e}, {:.3e}] to T = {}{}",
                 stats.accepted,

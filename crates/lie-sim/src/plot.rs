@@ -250,6 +250,8 @@ pub enum Marker {
     Diamond,
     /// ×
     Cross,
+    /// + (bold when filled)
+    Plus,
 }
 
 /// How a series is drawn: its colour, a dashed or solid line, its marker, filled or hollow.
@@ -327,6 +329,17 @@ macro_rules! with_marker {
             }
             Marker::Cross => {
                 let $mk = |p| EmptyElement::at(p) + Cross::new((0, 0), 4, st.color.stroke_width(2));
+                $body
+            }
+            Marker::Plus => {
+                let width = if st.filled { 3 } else { 1 };
+                let $mk = |p| {
+                    EmptyElement::at(p)
+                        + PathElement::new(
+                            vec![(-5, 0), (5, 0), (0, 0), (0, -5), (0, 5)],
+                            st.color.stroke_width(width),
+                        )
+                };
                 $body
             }
         }

@@ -149,7 +149,7 @@ pub fn run_scene(
         &scene.method,
         scene.reconstruct,
         &scene.solver,
-        scene.tolerance,
+        scene.variable,
     )?;
     let n = u128::from(scene.steps());
     // The runner reads the state after every step (energy monitor, rows, events): a processed
@@ -191,8 +191,8 @@ pub fn run_simulation(
     let start = Instant::now();
     let file = AtomicFile::new(out)?;
     let mut w = file.create()?;
-    let adaptive = scene.tolerance.is_some();
-    // A tolerance-driven run does not know its steps ahead: its progress is the time reached.
+    let adaptive = scene.variable.is_some();
+    // A run with variable steps does not know its steps ahead: its progress is the time reached.
     let n = if adaptive { u64::MAX } else { scene.steps() };
     let h = scene.step;
     let h_last = scene.duration - (n - 1) as f64 * h;

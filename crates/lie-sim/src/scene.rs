@@ -22,6 +22,9 @@
 //! # tolerance = 1e-8                # or, for a tolerance-driven method (rkmk-dop853, dop853, …):
 //! # rtol = 1e-8                     #   rtol = atol = tolerance, or rtol and atol apart (as
 //! # atol = 1e-10                    #   scipy and diffsol name them; crate::stepping)
+//! # epsilon = 0.05                  # or, for a symmetric method (splitting, compositions,
+//!                                   #   kinetic-kick, θ = 0.5): reversible variable steps
+//!                                   #   h = ε/ρ, ρ the motion's rate (crate::stepping)
 //! duration = 100.0                  # T > 0; ⌈T/h⌉ steps, the last one shortened to land on T
 //! reconstruct = true                # integrate g as well as μ (default true)
 //! # solver = "simplified-newton"    # implicit solver: simplified-newton (default) | newton |
@@ -102,17 +105,16 @@
 //! (positivity, orthogonality, lengths) and the method built once on the system to see that it
 //! applies. Each stage reports one error naming the field.
 
-use crate::build::{probe, refusal};
+use crate::build::{build_with, probe, refusal};
 use crate::error::SimError;
 use crate::fields::{positive, FieldError};
 use crate::forces::{check_forces, RawForces};
 use crate::methods::spec::{check as check_method, RawIntegrator, SolverOptions};
 use crate::methods::wrap::BuildError;
 use crate::methods::MethodSpec;
-use crate::stepping::{check as check_stepping, RawStepping, StepChoice};
+use crate::stepping::{check as check_stepping, RawStepping, StepChoice, VariableSteps};
 use crate::systems::common::SceneSystem;
 use crate::systems::{with_kind, KindVisitor, System, SystemKind};
-use integrators::adaptive::Tolerance;
 use serde::de::DeserializeOwned;
 use serde::Deserialize;
 use std::path::Path;
@@ -270,11 +272,12 @@ pub struct Scene {
     pub solver: SolverOptions,
     /// Whether the group element is integrated.
     pub reconstruct: bool,
-    /// Step h; for a tolerance-driven run, the duration T (its controller chooses its steps,
+    /// Step h; for a run with variable steps, the duration T (its controller chooses its steps,
     /// none longer than the run).
     pub step: f64,
-    /// The tolerance of a tolerance-driven run (`crate::stepping`), `None` for fixed steps.
-    pub tolerance: Option<Tolerance>,
+    /// How a run with variable steps chooses them: to a tolerance, or reversibly with ε
+    /// (`crate::stepping`); `None` for fixed steps.
+    pub variable: Option<VariableSteps>,
     /// Duration T.
     pub duration: f64,
     /// Output stride.
@@ -459,11 +462,12 @@ impl Scene {
             tolerance: it.tolerance,
             rtol: it.rtol,
             atol: it.atol,
+            epsilon: it.epsilon,
         };
-        let (step, tolerance) =
+        let (step, variable) =
             match check_stepping(&stepping, it.method, duration).map_err(|(f, m)| bad(&f, m))? {
                 StepChoice::Fixed(h) => (h, None),
-                StepChoice::Tolerance(t) => (duration, Some(t)),
+                StepChoice::Variable(v) => (duration, Some(v)),
             };
         if duration / step > MAX_STEPS {
             return Err(bad(
@@ -474,7 +478,10 @@ impl Scene {
                 ),
             ));
         }
-        let method = check_method(it).map_err(|(f, m)| bad(&f, m))?;
+        let method = MethodSpec {
+            reversible: matches!(variable, Some(VariableSteps::Reversible(_))),
+            ..check_method(it).map_err(|(f, m)| bad(&f, m))?
+        };
         if let Some(tol) = it.solver_tolerance {
             positive("integrator.solver_tolerance", tol).map_err(|(f, m)| bad(&f, m))?;
         }
@@ -515,6 +522,16 @@ impl Scene {
                 unavailable: false,
             }) => return Err(bad("integrator.method", BuildError::reason(&need, &why))),
             Err(e) => return Err(refusal(system.kind(), &method, e)),
+        }
+        if let Some(v @ VariableSteps::Reversible(_)) = variable {
+            // Whether the method is symmetric on this system, and ρ(y₀) > 0, is known once built.
+            if let Err(e) = build_with(&system, &method, reconstruct, &solver, Some(v)) {
+                let message = match e {
+                    SimError::Build { message, .. } => message,
+                    e => e.to_string(),
+                };
+                return Err(bad("integrator.epsilon", message));
+            }
         }
         let output_times = match &raw.output.times {
             None => None,
@@ -563,7 +580,7 @@ impl Scene {
             solver,
             reconstruct,
             step,
-            tolerance,
+            variable,
             duration,
             stride,
             output_times,

@@ -6,14 +6,14 @@
 //! spatial momentum map, a whole trajectory row — so that a run that reads the state after every
 //! step allocates nothing for it (groups whose matrix lives on the stack: SO(3), SE(2), SE(3)).
 
+use crate::driver::{Driver, ReversibleDriver};
 use faer::Mat;
-use integrators::adaptive::{Adaptive, Controller, EmbeddedPair, Stats, Tolerance};
+use integrators::adaptive::{Controller, EmbeddedPair, Stats, Tolerance};
 use integrators::dense_output::{DenseState, HermiteStep};
-use integrators::{Integrator, IntegratorError, MethodInfo};
+use integrators::{Integrator, IntegratorError, MethodInfo, StateSnapshot, SymmetricMethod};
 use lie_groups::{LieGroup, Vector};
 use nalgebra::{DMatrix, SMatrix};
 use std::any::Any;
-use std::cell::RefCell;
 
 /// One running simulation: the integrator, its system and its state.
 ///
@@ -168,12 +168,54 @@ impl<G: LieGroup<Matrix: Entries>> SimGroup for G {}
 /// Any integrator of the integrators crate on the group G, boxed: the type a scene's method (with
 /// its τ, θ, composition, processing) is erased to, so that one code path runs them all. A
 /// method with an error estimate is boxed as a [`Pair`] ([`Boxed::pair`]), so that a scene may
-/// run it to a tolerance ([`Boxed::into_pair`]) as well as with fixed steps.
+/// run it to a tolerance ([`Boxed::into_pair`]); a symmetric one with its system
+/// ([`Boxed::symmetric`]), so that a scene may run it with reversible variable steps
+/// ([`Boxed::into_reversible`]); each as well as with fixed steps.
 pub struct Boxed<G: LieGroup>(Erased<G>);
 
 enum Erased<G: LieGroup> {
     Fixed(Box<dyn Integrator<Group = G>>),
     Pair(Pair<G>),
+    Symmetric(Box<dyn DynSymmetric<Group = G>>),
+}
+
+/// A symmetric method with the system whose step density ρ steers its reversible variable
+/// steps, type-erased: both concrete types are known only where the method is built.
+trait DynSymmetric {
+    type Group: LieGroup;
+    fn method(&self) -> &dyn Integrator<Group = Self::Group>;
+    fn method_mut(&mut self) -> &mut dyn Integrator<Group = Self::Group>;
+    fn reversible(
+        self: Box<Self>,
+        epsilon: f64,
+    ) -> Result<Box<dyn Driver<Group = Self::Group>>, IntegratorError>;
+}
+
+/// The method M and its monitor S (`integrators::System::step_density`).
+struct Symmetric<M, S> {
+    method: M,
+    monitor: S,
+}
+
+impl<M, S> DynSymmetric for Symmetric<M, S>
+where
+    M: SymmetricMethod + StateSnapshot + Clone + 'static,
+    S: integrators::System<M::Group> + 'static,
+{
+    type Group = M::Group;
+    fn method(&self) -> &dyn Integrator<Group = M::Group> {
+        &self.method
+    }
+    fn method_mut(&mut self) -> &mut dyn Integrator<Group = M::Group> {
+        &mut self.method
+    }
+    fn reversible(
+        self: Box<Self>,
+        epsilon: f64,
+    ) -> Result<Box<dyn Driver<Group = M::Group>>, IntegratorError> {
+        let Self { method, monitor } = *self;
+        Ok(Box::new(ReversibleDriver::new(method, monitor, epsilon)?))
+    }
 }
 
 impl<G: LieGroup> Boxed<G> {
@@ -185,23 +227,52 @@ impl<G: LieGroup> Boxed<G> {
     pub fn pair<P: EmbeddedPair<Group = G> + 'static>(p: P) -> Self {
         Self(Erased::Pair(Pair(Box::new(p))))
     }
+    /// Erases the symmetric method `method` (`SymmetricMethod::is_symmetric`), keeping
+    /// `monitor`, whose step density steers its reversible variable steps; a method that is not
+    /// symmetric is erased as by [`Boxed::new`].
+    pub fn symmetric<M, S>(method: M, monitor: S) -> Self
+    where
+        M: SymmetricMethod + StateSnapshot + Clone + 'static,
+        S: integrators::System<G> + 'static,
+        M: Integrator<Group = G>,
+    {
+        if method.is_symmetric() {
+            Self(Erased::Symmetric(Box::new(Symmetric { method, monitor })))
+        } else {
+            Self::new(method)
+        }
+    }
     /// The embedded pair, when the method is one; itself otherwise.
     pub fn into_pair(self) -> Result<Pair<G>, Self> {
         match self.0 {
             Erased::Pair(p) => Ok(p),
-            fixed => Err(Self(fixed)),
+            other => Err(Self(other)),
+        }
+    }
+    /// The method run with the reversible step-density controller and steps ε in τ
+    /// (`integrators::adaptive::ReversibleSteps`), when it is symmetric; itself otherwise.
+    #[allow(clippy::type_complexity)]
+    pub fn into_reversible(
+        self,
+        epsilon: f64,
+    ) -> Result<Result<Box<dyn Driver<Group = G>>, IntegratorError>, Self> {
+        match self.0 {
+            Erased::Symmetric(s) => Ok(s.reversible(epsilon)),
+            other => Err(Self(other)),
         }
     }
     fn inner(&self) -> &dyn Integrator<Group = G> {
         match &self.0 {
             Erased::Fixed(b) => &**b,
             Erased::Pair(p) => &*p.0,
+            Erased::Symmetric(s) => s.method(),
         }
     }
     fn inner_mut(&mut self) -> &mut dyn Integrator<Group = G> {
         match &mut self.0 {
             Erased::Fixed(b) => &mut **b,
             Erased::Pair(p) => &mut *p.0,
+            Erased::Symmetric(s) => s.method_mut(),
         }
     }
 }
@@ -392,19 +463,20 @@ impl<I: Integrator, S> Adapter<I, S> {
     }
 }
 
-fn write_vector<V: Vector>(v: &V, out: &mut [f64]) {
+/// μ's components into `out`.
+pub(crate) fn write_vector<V: Vector>(v: &V, out: &mut [f64]) {
     for (i, o) in out.iter_mut().enumerate().take(v.dim()) {
         *o = v.get(i);
     }
 }
 
 /// g's matrix side, when reconstructed.
-fn group_side<I: Integrator<Group: SimGroup>>(i: &I) -> Option<usize> {
+pub(crate) fn group_side<I: Integrator<Group: SimGroup> + ?Sized>(i: &I) -> Option<usize> {
     i.configuration().map(|g| g.matrix().side())
 }
 
 /// g's entries row-major into `out`; `false` when g is not reconstructed.
-fn read_group<I: Integrator<Group: SimGroup>>(i: &I, out: &mut [f64]) -> bool {
+pub(crate) fn read_group<I: Integrator<Group: SimGroup> + ?Sized>(i: &I, out: &mut [f64]) -> bool {
     match i.configuration() {
         Some(g) => {
             g.matrix().write_row_major(out);
@@ -415,7 +487,10 @@ fn read_group<I: Integrator<Group: SimGroup>>(i: &I, out: &mut [f64]) -> bool {
 }
 
 /// The spatial momentum map into `out` (see [`Simulation::read_spatial_momentum`]).
-fn read_spatial_momentum<I: Integrator<Group: SimGroup>>(i: &I, out: &mut [f64]) -> bool {
+pub(crate) fn read_spatial_momentum<I: Integrator<Group: SimGroup> + ?Sized>(
+    i: &I,
+    out: &mut [f64],
+) -> bool {
     // Ad*_{g⁻¹} μ = (Ad_{g⁻¹})ᵀ μ: `coadjoint_apply` is the dual map of Ad, so it is applied
     // to g⁻¹ (on SO(3), Ad_{R⁻¹} = Rᵀ and J = R Π).
     match i.configuration() {
@@ -428,7 +503,7 @@ fn read_spatial_momentum<I: Integrator<Group: SimGroup>>(i: &I, out: &mut [f64])
 }
 
 /// The trajectory row of the state (μ, g) at t into `row`, energy and Casimir from `system`.
-fn write_row<G: SimGroup, S: integrators::System<G>>(
+pub(crate) fn write_row<G: SimGroup, S: integrators::System<G>>(
     system: &S,
     t: f64,
     mu: &G::Algebra,
@@ -505,97 +580,6 @@ where
             .map_err(|e| e.to_string())?;
         let (mu, g) = step.at(t);
         write_row(&self.system, t, &mu, g.as_ref(), row);
-        Ok(())
-    }
-}
-
-/// An embedded pair run to a tolerance by the library's driver
-/// (`integrators::adaptive::Adaptive`), with its system, seen as a [`Simulation`].
-///
-/// Rows between two accepted steps (output times, events) are **partial steps** of the method
-/// from the state at the step's start, as `Adaptive::solve` evaluates them: the method's own
-/// accuracy, where a cubic Hermite interpolant would add its O(h⁴) error over the long steps of
-/// an order-5 or order-8 pair; the step sequence does not depend on them. The start is copied
-/// in place each step ([`Simulation::mark`]) and the partial step taken on a second copy, so
-/// that neither allocates.
-pub struct PairSim<G: LieGroup, S> {
-    run: Adaptive<Pair<G>>,
-    system: S,
-    /// The state at the start of the current step.
-    marked: Pair<G>,
-    /// Where partial steps are taken.
-    scratch: RefCell<Pair<G>>,
-}
-
-impl<G: LieGroup, S> PairSim<G, S> {
-    /// `pair` advancing `system`, run to `tolerance`.
-    pub fn new(pair: Pair<G>, system: S, tolerance: Tolerance) -> Self {
-        let marked = pair.clone();
-        let scratch = RefCell::new(pair.clone());
-        Self {
-            run: Adaptive::new(pair, tolerance),
-            system,
-            marked,
-            scratch,
-        }
-    }
-}
-
-impl<G, S> Simulation for PairSim<G, S>
-where
-    G: SimGroup,
-    S: integrators::System<G>,
-{
-    /// A tolerance-driven run takes the steps its controller chooses ([`Self::step_towards`]).
-    fn step(&mut self, _h: f64) -> Result<(), String> {
-        Err("a tolerance-driven run chooses its own steps".into())
-    }
-    fn step_towards(&mut self, t_end: f64) -> Result<(), String> {
-        self.run.step_towards(t_end).map_err(|e| e.to_string())
-    }
-    fn stats(&self) -> Option<Stats> {
-        Some(*self.run.stats())
-    }
-    fn time(&self) -> f64 {
-        self.run.method().time()
-    }
-    fn momentum_dim(&self) -> usize {
-        G::dim()
-    }
-    fn group_side(&self) -> Option<usize> {
-        group_side(self.run.method())
-    }
-    fn read_momentum(&self, out: &mut [f64]) {
-        write_vector(&self.run.method().momentum(), out);
-    }
-    fn read_group(&self, out: &mut [f64]) -> bool {
-        read_group(self.run.method(), out)
-    }
-    fn energy(&self) -> f64 {
-        self.run.method().energy()
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.run.method().casimir()
-    }
-    fn read_spatial_momentum(&self, out: &mut [f64]) -> bool {
-        read_spatial_momentum(self.run.method(), out)
-    }
-    fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
-        self.system.conserved_momentum_map()
-    }
-    fn info(&self) -> MethodInfo {
-        self.run.method().info()
-    }
-    fn mark(&mut self) {
-        self.marked.clone_from(self.run.method());
-    }
-    fn read_at(&self, t: f64, row: &mut [f64]) -> Result<(), String> {
-        let mut m = self.scratch.borrow_mut();
-        m.clone_from(&self.marked);
-        if t != m.time() {
-            EmbeddedPair::step_to(&mut *m, t).map_err(|e| e.to_string())?;
-        }
-        write_row(&self.system, t, &m.momentum(), m.configuration(), row);
         Ok(())
     }
 }

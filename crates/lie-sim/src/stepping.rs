@@ -1,7 +1,12 @@
 //! How a scene's run steps: a fixed step h (`integrator.step`), or a tolerance the method's
 //! error estimate meets (`integrator.tolerance`, or `rtol` and `atol`, named as scipy's
 //! `solve_ivp(rtol, atol)` and diffsol name them), whichever its registry row takes
-//! ([`crate::methods::row::Stepping`]).
+//! ([`crate::methods::row::Stepping`]); or, for a fixed-step method that is symmetric, reversible
+//! variable steps (`integrator.epsilon`): the step-density controller of Hairer–Söderlind
+//! (`integrators::adaptive::ReversibleSteps`), h_n = ε/ρ_{n+½} with ρ the rate of the motion
+//! (`integrators::System::step_density`), so that ε is the step in units of the motion's time
+//! scale, and the error of an order-p method falls as ε^p. Whether the method is symmetric is
+//! decided when it is built (`SymmetricMethod::is_symmetric`: the one rule).
 //!
 //! `tolerance = 1e-8` is `rtol = atol = 1e-8`; `rtol` and `atol` give them apart (both, not
 //! one). The library's [`Tolerance::new`] decides what is valid (finite, > 0, `rtol` no smaller
@@ -26,6 +31,8 @@ pub struct RawStepping {
     pub rtol: Option<f64>,
     /// `atol`.
     pub atol: Option<f64>,
+    /// `epsilon`.
+    pub epsilon: Option<f64>,
 }
 
 /// How a checked scene steps.
@@ -33,8 +40,17 @@ pub struct RawStepping {
 pub enum StepChoice {
     /// A fixed step h > 0, at most T.
     Fixed(f64),
-    /// Steps the controller chooses to meet the tolerance.
+    /// Steps chosen as the run goes.
+    Variable(VariableSteps),
+}
+
+/// Steps chosen as the run goes, and by what.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum VariableSteps {
+    /// The error controller of an embedded pair, to this tolerance.
     Tolerance(Tolerance),
+    /// The reversible step-density controller of a symmetric method, with this ε > 0.
+    Reversible(f64),
 }
 
 /// The methods whose row takes `stepping`, for messages.
@@ -58,6 +74,28 @@ pub fn check(raw: &RawStepping, method: MethodId, duration: f64) -> Result<StepC
     .into_iter()
     .find_map(|(k, v)| v.map(|v| (k, v)));
     match method.row().takes.stepping {
+        Stepping::Fixed if raw.epsilon.is_some() => {
+            let epsilon = raw.epsilon.unwrap_or_default();
+            if let Some((key, value)) = given_tolerance {
+                return Err((
+                    field(key),
+                    format!(
+                        "give epsilon (= {epsilon:e}, reversible variable steps) or {key}                          (= {value:e}), not both; {method} takes epsilon, the methods that take                          a tolerance: {}",
+                        methods_stepping(Stepping::Tolerance)
+                    ),
+                ));
+            }
+            if let Some(step) = raw.step {
+                return Err((
+                    field("step"),
+                    format!(
+                        "give step (= {step}, fixed steps) or epsilon (= {epsilon:e}, reversible                          variable steps h = ε/ρ), not both"
+                    ),
+                ));
+            }
+            let epsilon = positive(&field("epsilon"), epsilon)?;
+            Ok(StepChoice::Variable(VariableSteps::Reversible(epsilon)))
+        }
         Stepping::Fixed => {
             if let Some((key, value)) = given_tolerance {
                 return Err((
@@ -93,6 +131,14 @@ pub fn check(raw: &RawStepping, method: MethodId, duration: f64) -> Result<StepC
             Ok(StepChoice::Fixed(step))
         }
         Stepping::Tolerance => {
+            if let Some(epsilon) = raw.epsilon {
+                return Err((
+                    field("epsilon"),
+                    format!(
+                        "{method} chooses its own steps to meet a tolerance: give tolerance                          (or rtol and atol) instead of epsilon = {epsilon:e} (reversible steps are                          for the symmetric fixed-step methods)"
+                    ),
+                ));
+            }
             if let Some(step) = raw.step {
                 return Err((
                     field("step"),
@@ -138,7 +184,7 @@ pub fn check(raw: &RawStepping, method: MethodId, duration: f64) -> Result<StepC
                 }
             };
             Tolerance::new(rtol, atol)
-                .map(StepChoice::Tolerance)
+                .map(|t| StepChoice::Variable(VariableSteps::Tolerance(t)))
                 .map_err(|e| match e {
                     IntegratorError::InvalidTolerance {
                         name,
@@ -169,6 +215,7 @@ mod tests {
             tolerance: tol,
             rtol,
             atol,
+            epsilon: None,
         }
     }
 
@@ -245,15 +292,70 @@ mod tests {
         let dop = MethodId::RkmkDop853;
         assert_eq!(
             check(&raw(None, Some(1e-8), None, None), dop, 1.0),
-            Ok(StepChoice::Tolerance(Tolerance::new(1e-8, 1e-8).unwrap()))
+            Ok(StepChoice::Variable(VariableSteps::Tolerance(
+                Tolerance::new(1e-8, 1e-8).unwrap()
+            )))
         );
         assert_eq!(
             check(&raw(None, None, Some(1e-6), Some(1e-9)), dop, 1.0),
-            Ok(StepChoice::Tolerance(Tolerance::new(1e-6, 1e-9).unwrap()))
+            Ok(StepChoice::Variable(VariableSteps::Tolerance(
+                Tolerance::new(1e-6, 1e-9).unwrap()
+            )))
         );
         assert_eq!(
             check(&raw(Some(0.1), None, None, None), MethodId::Rk4, 1.0),
             Ok(StepChoice::Fixed(0.1))
         );
+    }
+
+    /// ε is taken by the fixed-step methods instead of a step (their symmetry is checked when
+    /// built), refused beside a step or a tolerance and by the tolerance-driven methods, and
+    /// must be finite and > 0.
+    #[test]
+    fn epsilon_replaces_the_step_of_a_fixed_step_method() {
+        let with_epsilon = |step, tol, eps| RawStepping {
+            epsilon: Some(eps),
+            ..raw(step, tol, None, None)
+        };
+        assert_eq!(
+            check(&with_epsilon(None, None, 0.05), MethodId::Splitting, 1.0),
+            Ok(StepChoice::Variable(VariableSteps::Reversible(0.05)))
+        );
+        let refused = [
+            (
+                with_epsilon(Some(0.1), None, 0.05),
+                MethodId::Splitting,
+                "integrator.step",
+            ),
+            (
+                with_epsilon(None, Some(1e-8), 0.05),
+                MethodId::Splitting,
+                "integrator.tolerance",
+            ),
+            (
+                with_epsilon(None, Some(1e-8), 0.05),
+                MethodId::RkmkDop853,
+                "integrator.epsilon",
+            ),
+            (
+                with_epsilon(None, None, 0.0),
+                MethodId::Splitting,
+                "integrator.epsilon",
+            ),
+            (
+                with_epsilon(None, None, -0.1),
+                MethodId::LiePoisson,
+                "integrator.epsilon",
+            ),
+            (
+                with_epsilon(None, None, f64::NAN),
+                MethodId::Splitting,
+                "integrator.epsilon",
+            ),
+        ];
+        for (raw, method, key) in refused {
+            let (field, message) = check(&raw, method, 1.0).unwrap_err();
+            assert_eq!(field, key, "{message}");
+        }
     }
 }

@@ -33,6 +33,7 @@ use crate::methods::{build as build_method, MethodSpec};
 use crate::model::{Alg, Job, Model};
 use crate::output::write_atomic;
 use crate::scene::{steps_for, Scene, SweepKind, SweepSpec};
+use crate::stepping::VariableSteps;
 use integrators::ensemble::{
     energy_level_point, sphere_point, Ensemble, Execution, Shard, Summary,
 };
@@ -257,12 +258,18 @@ pub fn plan(scene: &Scene) -> Result<(SweepSpec, usize, f64), SimError> {
             scene.source
         ),
     })?;
-    if let Some(t) = scene.tolerance {
+    if let Some(v) = scene.variable {
+        let how = match v {
+            VariableSteps::Tolerance(t) => format!("to a tolerance (rtol = {:e})", t.rtol),
+            VariableSteps::Reversible(epsilon) => {
+                format!("with reversible variable steps (epsilon = {epsilon:e})")
+            }
+        };
         return Err(SimError::Sweep {
             message: format!(
-                "the ensemble steps its members in lockstep with one fixed step, and {} runs to \
-                 a tolerance (rtol = {:e}): give the sweep a fixed-step method and its step",
-                scene.method, t.rtol
+                "the ensemble steps its members in lockstep with one fixed step, and {} runs \
+                 {how}: give the sweep a fixed-step method and its step",
+                scene.method
             ),
         });
     }

@@ -29,9 +29,15 @@
 //! the method keeps structure beyond g on G ([`crate::methods::geometric`], from its
 //! `MethodInfo`).
 //!
+//! The configurations a row declares for reversible variable steps (`Trade::reversible`: a
+//! symmetric method steered by the step-density controller, `integrator.epsilon`) run over the
+//! ladder ε = h ρ(y₀) of the steps (ρ the model's step density at the initial state, so that
+//! each starts with the ladder's step h and then follows the motion); their `h` is the mean step
+//! T/steps and their `epsilon` the ε asked for.
+//!
 //! Error at T and timing: [`crate::measure`]; nothing of the trajectory is stored.
 
-use crate::build::{build, build_with};
+use crate::build::{build, build_with, step_density};
 use crate::error::SimError;
 use crate::measure::{timed_adaptive_run, timed_run, Timed};
 use crate::methods::row::Stepping;
@@ -41,6 +47,7 @@ use crate::plot::{plot_loglog, Annotations, Curve};
 use crate::reference::{meets, Reference};
 use crate::run::Cell;
 use crate::scene::{steps_for, Scene};
+use crate::stepping::VariableSteps;
 use integrators::adaptive::Tolerance;
 use integrators::MethodInfo;
 use std::fmt::Write as _;
@@ -64,18 +71,22 @@ pub fn tolerance_driven(m: &MethodSpec) -> bool {
     m.method.row().takes.stepping == Stepping::Tolerance
 }
 
-/// How one run of the trade steps: a fixed step h or a tolerance.
+/// How one run of the trade steps: a fixed step h, a tolerance, or reversible steps with ε.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Run {
     Step(f64),
     Tolerance(f64),
+    Epsilon(f64),
 }
 
-/// The runs of a method in the trade: [`TOLERANCES`] for a tolerance-driven method, the steps of
-/// [`steps_of`] otherwise.
-fn runs_of(m: &MethodSpec, ladder: &[f64], duration: f64) -> Vec<Run> {
+/// The runs of a method in the trade: [`TOLERANCES`] for a tolerance-driven method, ε = h ρ₀
+/// over the ladder for reversible steps (ρ₀ the step density at the initial state), the steps
+/// of [`steps_of`] otherwise.
+fn runs_of(m: &MethodSpec, ladder: &[f64], duration: f64, rho0: f64) -> Vec<Run> {
     if tolerance_driven(m) {
         TOLERANCES.iter().map(|&t| Run::Tolerance(t)).collect()
+    } else if m.reversible {
+        ladder.iter().map(|&h| Run::Epsilon(h * rho0)).collect()
     } else {
         steps_of(m, ladder, duration)
             .into_iter()
@@ -122,10 +133,12 @@ pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds:
 pub struct TradeRow {
     /// The method.
     pub method: MethodSpec,
-    /// Step h (the mean accepted step T/steps of a tolerance-driven run).
+    /// Step h (the mean accepted step T/steps of a run with variable steps).
     pub h: f64,
-    /// The tolerance (rtol = atol) of a tolerance-driven run, `None` for fixed steps.
+    /// The tolerance (rtol = atol) of a tolerance-driven run, `None` otherwise.
     pub tolerance: Option<f64>,
+    /// The ε of a run with reversible variable steps, `None` otherwise.
+    pub epsilon: Option<f64>,
     /// Steps taken (0 when the run failed before the first).
     pub steps: u64,
     /// Mean time per step, ns.
@@ -204,14 +217,18 @@ pub fn trade(
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     let mut inapplicable = Vec::new();
+    let rho0 = step_density(&scene.system, scene.reconstruct)?;
     for m in candidates() {
-        for run in runs_of(&m, ladder, scene.duration) {
-            let tolerance = match run {
+        for run in runs_of(&m, ladder, scene.duration, rho0) {
+            let variable = match run {
                 Run::Step(_) => None,
-                Run::Tolerance(t) => Some(Tolerance::uniform(t).map_err(|e| SimError::Build {
-                    what: m.to_string(),
-                    message: e.to_string(),
-                })?),
+                Run::Tolerance(t) => Some(VariableSteps::Tolerance(
+                    Tolerance::uniform(t).map_err(|e| SimError::Build {
+                        what: m.to_string(),
+                        message: e.to_string(),
+                    })?,
+                )),
+                Run::Epsilon(e) => Some(VariableSteps::Reversible(e)),
             };
             let mut best: Option<Result<Timed, SimError>> = None;
             let mut info = None;
@@ -221,7 +238,7 @@ pub fn trade(
                     &m,
                     scene.reconstruct,
                     &scene.solver,
-                    tolerance,
+                    variable,
                 );
                 let mut sim = match built {
                     Ok(s) => s,
@@ -235,7 +252,9 @@ pub fn trade(
                 info = Some(sim.info());
                 let t = match run {
                     Run::Step(h) => timed_run(sim.as_mut(), scene.duration, h),
-                    Run::Tolerance(_) => timed_adaptive_run(sim.as_mut(), scene.duration),
+                    Run::Tolerance(_) | Run::Epsilon(_) => {
+                        timed_adaptive_run(sim.as_mut(), scene.duration)
+                    }
                 };
                 best = Some(match (best, t) {
                     (Some(Ok(b)), Ok(t)) if b.stepping <= t.stepping => Ok(b),
@@ -251,19 +270,21 @@ pub fn trade(
                 }
                 break;
             };
-            let (h, tolerance) = match run {
-                Run::Step(h) => (h, None),
-                Run::Tolerance(tol) => (f64::NAN, Some(tol)),
+            let (h, tolerance, epsilon) = match run {
+                Run::Step(h) => (h, None, None),
+                Run::Tolerance(tol) => (f64::NAN, Some(tol), None),
+                Run::Epsilon(e) => (f64::NAN, None, Some(e)),
             };
             let row = match result {
                 Ok(t) => TradeRow {
                     method: m.clone(),
-                    h: if tolerance.is_some() {
+                    h: if variable.is_some() {
                         scene.duration / t.steps as f64
                     } else {
                         h
                     },
                     tolerance,
+                    epsilon,
                     steps: t.steps,
                     ns_per_step: t.stepping.as_nanos() as f64 / t.steps as f64,
                     seconds: t.stepping.as_secs_f64(),
@@ -279,6 +300,7 @@ pub fn trade(
                     method: m.clone(),
                     h,
                     tolerance,
+                    epsilon,
                     steps: 0,
                     ns_per_step: f64::NAN,
                     seconds: f64::NAN,
@@ -343,7 +365,8 @@ pub fn fitted_order(rows: &[&TradeRow], reference_error: f64) -> Option<f64> {
 /// Table header, fixed width.
 pub fn table_header() -> String {
     format!(
-        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11} {:>11} {:>9} {:>9}",
+        "{:<20} {:>6} {:>5} {:>13} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11} {:>11} {:>9} {:>9} \
+         {:>9}",
         "method",
         "tau",
         "theta",
@@ -356,7 +379,8 @@ pub fn table_header() -> String {
         "max|dC/C|",
         "max|dJ|/|J|",
         "tolerance",
-        "err/tol"
+        "err/tol",
+        "epsilon"
     )
 }
 
@@ -373,7 +397,7 @@ pub fn table_line(r: &TradeRow) -> String {
     match &r.failure {
         Some(f) => format!("{head} failed: {f}"),
         None => format!(
-            "{head} {:>10} {:>11.1} {:>11} {:>11.3e} {:>11} {:>11} {:>9} {:>9}",
+            "{head} {:>10} {:>11.1} {:>11} {:>11.3e} {:>11} {:>11} {:>9} {:>9} {:>9}",
             r.steps,
             r.ns_per_step,
             r.resolved_error()
@@ -384,7 +408,8 @@ pub fn table_line(r: &TradeRow) -> String {
             r.tolerance
                 .map_or_else(|| "-".into(), |t| format!("{t:.0e}")),
             r.proportionality()
-                .map_or_else(|| "-".into(), |p| format!("{p:.2e}"))
+                .map_or_else(|| "-".into(), |p| format!("{p:.2e}")),
+            r.epsilon.map_or_else(|| "-".into(), |e| format!("{e:.2e}"))
         ),
     }
 }
@@ -398,20 +423,21 @@ fn optional(x: Option<f64>) -> String {
 /// `error` cell holds the error at T only where it is resolved; `error_status` says `measured`,
 /// `unresolved` (below `reference_error`, the reference's estimated error: the cell is empty) or
 /// `failed`. `tolerance` is the tolerance of a tolerance-driven run (empty for fixed steps, whose
-/// `h` is the step; a tolerance-driven run's `h` is its mean step); `geometric` is `true` or
+/// `h` is the step; a run with variable steps has its mean step as `h`); `epsilon` is the ε of
+/// a run with reversible variable steps (empty otherwise); `geometric` is `true` or
 /// `false` as [`crate::methods::geometric`] reads the method's own `MethodInfo` (empty when the
 /// method was never built).
 pub fn to_csv(rows: &[TradeRow]) -> String {
     let mut s = String::from(
         "method,tau,theta,composition,tolerance,h,steps,ns_per_step,seconds,error,error_status,\
          reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,geometric,\
-         failure\n",
+         failure,epsilon\n",
     );
     let cell = |x: Option<f64>| x.map_or_else(String::new, |v| Cell(v).to_string());
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.method.method_label(),
             r.method.tau_label(),
             r.method.theta_label(),
@@ -429,7 +455,8 @@ pub fn to_csv(rows: &[TradeRow]) -> String {
             cell(r.max_momentum_map_error),
             r.info
                 .map_or_else(String::new, |i| geometric(&i).to_string()),
-            r.failure.as_deref().unwrap_or("").replace(',', ";")
+            r.failure.as_deref().unwrap_or("").replace(',', ";"),
+            cell(r.epsilon)
         );
     }
     s
@@ -568,17 +595,20 @@ pub fn curve_label(m: &MethodSpec, info: Option<MethodInfo>) -> String {
             TOLERANCES[0],
             TOLERANCES[TOLERANCES.len() - 1]
         )
+    } else if m.reversible {
+        format!("{label}, reversible steps over ε")
     } else {
         label
     }
 }
 
-/// A run as the summaries name it: `h = 1.000e-2`, or `tolerance = 1e-8` for a tolerance-driven
-/// run.
+/// A run as the summaries name it: `h = 1.000e-2`, `tolerance = 1e-8` for a tolerance-driven
+/// run, `ε = 2.500e-2` for reversible steps.
 pub fn run_label(r: &TradeRow) -> String {
-    match r.tolerance {
-        Some(t) => format!("tolerance = {t:.0e}"),
-        None => format!("h = {:.3e}", r.h),
+    match (r.tolerance, r.epsilon) {
+        (Some(t), _) => format!("tolerance = {t:.0e}"),
+        (None, Some(e)) => format!("ε = {e:.3e}"),
+        (None, None) => format!("h = {:.3e}", r.h),
     }
 }
 
@@ -741,6 +771,7 @@ mod tests {
             failure: None,
             info: None,
             tolerance: None,
+            epsilon: None,
         }
     }
 

@@ -31,6 +31,7 @@ pub const ROW: Row = Row {
         modified: &[],
         processing: false,
         one_step: false,
+        reversible: &[],
     },
     family,
     second: false,

@@ -28,6 +28,7 @@ pub const ROW: Row = Row {
         modified: &[],
         processing: false,
         one_step: false,
+        reversible: &[],
     },
     family,
     second: false,
@@ -80,8 +81,13 @@ where
     type Out = Result<Boxed<G>, BuildError>;
     fn visit<T: Tau<G>>(self) -> Self::Out {
         let theta = self.options.theta.unwrap_or(0.0);
-        let ep = EulerPoincare::<G, T, S>::from_momentum(self.system, theta, self.mu0, self.g0)?
-            .with_solver(*self.config);
-        wrap(ep, self.options, self.name, self.kind)
+        let ep = EulerPoincare::<G, T, S>::from_momentum(
+            self.system.clone(),
+            theta,
+            self.mu0,
+            self.g0,
+        )?
+        .with_solver(*self.config);
+        wrap(ep, &self.system, self.options, self.name, self.kind)
     }
 }

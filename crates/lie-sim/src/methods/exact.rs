@@ -33,6 +33,7 @@ pub const ROW: Row = Row {
         modified: &[],
         processing: false,
         one_step: true,
+        reversible: &[],
     },
     family,
     second: false,

@@ -31,6 +31,7 @@ pub const ROW: Row = Row {
         modified: &[],
         processing: true,
         one_step: false,
+        reversible: &[None],
     },
     family,
     second: true,
@@ -83,6 +84,6 @@ impl<G: LieGroup> KineticVisitor<G> for Kicks<'_> {
             .clone()
             .unwrap_or_else(SplittingScheme::strang);
         let kk = KineticKick::new(system.clone(), flow, scheme, mu0, g0)?;
-        wrap(kk, self.options, ROW.name, self.kind)
+        wrap(kk, system, self.options, ROW.name, self.kind)
     }
 }

@@ -38,6 +38,7 @@ pub const ROW: Row = Row {
         modified: &[(0.5, 4), (0.0, 4), (0.5, 6), (0.0, 6)],
         processing: true,
         one_step: false,
+        reversible: &[None],
     },
     family,
     second: false,
@@ -109,9 +110,9 @@ where
     type Out = Result<Boxed<G>, BuildError>;
     fn visit<T: Tau<G>>(self) -> Self::Out {
         let theta = self.options.theta.unwrap_or(0.0);
-        let lp = LiePoisson::<G, T, S>::new(self.system, theta, self.mu0, self.g0)?
+        let lp = LiePoisson::<G, T, S>::new(self.system.clone(), theta, self.mu0, self.g0)?
             .with_solver(*self.config);
-        wrap(lp, self.options, ROW.name, self.kind)
+        wrap(lp, &self.system, self.options, ROW.name, self.kind)
     }
 }
 

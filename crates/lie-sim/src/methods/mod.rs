@@ -139,6 +139,9 @@ pub struct MethodSpec {
     pub processing: Option<ProcessingScheme>,
     /// The modified Hamiltonian of this order (4: H − h²H₂; 6: H − h²H₂ − h⁴H₄).
     pub modified: Option<u32>,
+    /// Run with reversible variable steps h = ε/ρ (`integrator.epsilon`, `crate::stepping`)
+    /// rather than a fixed step: the same method, steered by the step-density controller.
+    pub reversible: bool,
 }
 
 impl MethodSpec {
@@ -155,6 +158,7 @@ impl MethodSpec {
             splitting: None,
             processing: None,
             modified: None,
+            reversible: false,
         }
     }
     /// Its options, as the method's constructor reads them.
@@ -222,13 +226,18 @@ impl fmt::Display for MethodSpec {
         if let Some(p) = &self.processing {
             write!(f, "processed {} ∘ ", p.name())?;
         }
-        f.write_str(&self.options().base(self.method.name()))
+        f.write_str(&self.options().base(self.method.name()))?;
+        if self.reversible {
+            f.write_str(", reversible steps")?;
+        }
+        Ok(())
     }
 }
 
 /// Every configuration `trade` and `choose` run, in table order: for each row in registry order,
 /// its plain configurations (each set of coefficients × each τ × each θ), its compositions, its
-/// modified Hamiltonians and its processed forms (`Trade`), each over the τ it takes.
+/// modified Hamiltonians, its processed forms and its configurations with reversible variable
+/// steps (`Trade`), each over the τ it takes.
 pub fn candidates() -> Vec<MethodSpec> {
     let mut v = Vec::new();
     for &method in MethodId::ALL {
@@ -300,6 +309,21 @@ pub fn candidates() -> Vec<MethodSpec> {
                 }
             }
         }
+        for name in row.trade.reversible {
+            let composition = name.map(|n| {
+                n.parse::<CompositionScheme>()
+                    .unwrap_or_else(|_| panic!("{}: {n} is not a composition scheme", row.name))
+            });
+            for &tau in &taus {
+                v.push(MethodSpec {
+                    tau,
+                    theta: symmetric,
+                    composition: composition.clone(),
+                    reversible: true,
+                    ..plain.clone()
+                });
+            }
+        }
     }
     v
 }
@@ -343,6 +367,16 @@ pub fn style(m: &MethodSpec) -> SeriesStyle {
             dashed: second,
             marker,
             filled: if m.tau.is_some() { !second } else { second },
+        };
+    }
+    if m.reversible {
+        // Reversible variable steps: + in the method's colour, bold for the base method and
+        // thin for a composition of it.
+        return SeriesStyle {
+            color: family(m).color,
+            dashed: second,
+            marker: Marker::Plus,
+            filled: m.composition.is_none(),
         };
     }
     let marker = if let Some(order) = m.modified {
@@ -430,7 +464,8 @@ mod tests {
                 * (coefficients * thetas
                     + row.trade.compositions.len()
                     + row.trade.modified.len()
-                    + processing);
+                    + processing
+                    + row.trade.reversible.len());
             let got = all.iter().filter(|s| s.method == m).count();
             assert_eq!(got, want, "{m}");
         }

@@ -69,6 +69,9 @@ pub struct Trade {
     /// Run once in one step to T (an exact flow: its error does not depend on h, nor its cost
     /// per step).
     pub one_step: bool,
+    /// Configurations also run with reversible variable steps (`integrator.epsilon`, over a
+    /// ladder of ε): the symmetric configuration (`None`) and compositions of it, by name.
+    pub reversible: &'static [Option<&'static str>],
 }
 
 /// One method of the registry (see the module page).

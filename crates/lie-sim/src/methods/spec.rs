@@ -30,6 +30,8 @@ pub struct RawIntegrator {
     pub rtol: Option<f64>,
     /// Its absolute tolerance (scipy's `atol`), with `rtol`.
     pub atol: Option<f64>,
+    /// ε of reversible variable steps h = ε/ρ, for a symmetric method (`crate::stepping`).
+    pub epsilon: Option<f64>,
     /// Duration T > 0.
     pub duration: f64,
     /// Integrate the group element too (default true).
@@ -298,6 +300,8 @@ pub fn check(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
         splitting,
         processing,
         modified,
+        // Set from the scene's stepping keys (`integrator.epsilon`, `crate::stepping`).
+        reversible: false,
     })
 }
 
@@ -319,6 +323,7 @@ mod tests {
                 tolerance: None,
                 rtol: None,
                 atol: None,
+                epsilon: None,
                 duration: 1.0,
                 reconstruct: None,
                 solver: None,
@@ -330,7 +335,12 @@ mod tests {
                 modified: s.modified.map(|_| true),
                 order: s.modified,
             };
-            assert_eq!(check(&raw).as_ref(), Ok(s), "{s}");
+            // Reversible steps are set by the scene's stepping keys (`epsilon`), not by these.
+            let expected = MethodSpec {
+                reversible: false,
+                ..s.clone()
+            };
+            assert_eq!(check(&raw), Ok(expected), "{s}");
         }
     }
 }

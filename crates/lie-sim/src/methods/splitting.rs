@@ -31,6 +31,8 @@ pub const ROW: Row = Row {
         modified: &[],
         processing: true,
         one_step: false,
+        // The base and an order-6 composition: where variable steps pay, both orders' cost.
+        reversible: &[None, Some("kahan-li-6")],
     },
     family,
     second: false,
@@ -76,6 +78,7 @@ impl<G: LieGroup> SplitVisitor<G> for Strang<'_> {
         mu0: G::Algebra,
         g0: Option<G>,
     ) -> Self::Out {
-        wrap(Splitting::new(system.clone(), mu0, g0)?, self.options, ROW.name, self.kind)
+        let split = Splitting::new(system.clone(), mu0, g0)?;
+        wrap(split, system, self.options, ROW.name, self.kind)
     }
 }

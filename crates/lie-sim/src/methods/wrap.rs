@@ -77,18 +77,23 @@ impl BuildError {
 
 /// `inner`, or `inner` composed with the spec's composition scheme, or processed by its
 /// processing scheme — when `inner` is symmetric as the integrators crate reports it
-/// (`SymmetricMethod::is_symmetric`: the one rule), refused naming the base otherwise.
-pub fn wrap<I>(
+/// (`SymmetricMethod::is_symmetric`: the one rule), refused naming the base otherwise. A
+/// symmetric result (the base, or its composition) keeps `system` as the monitor of its
+/// reversible variable steps ([`Boxed::symmetric`]); a processed method takes fixed steps only
+/// (its processor P is applied once, at the ends of a run of equal kernel steps).
+pub fn wrap<I, S>(
     inner: I,
+    system: &S,
     options: &Options,
     name: &str,
     kind: &str,
 ) -> Result<Boxed<I::Group>, BuildError>
 where
     I: SymmetricMethod + StateSnapshot + Clone + 'static,
+    S: integrators::System<I::Group> + Clone + 'static,
 {
     let (field, scheme) = match (&options.composition, &options.processing) {
-        (None, None) => return Ok(Boxed::new(inner)),
+        (None, None) => return Ok(Boxed::symmetric(inner, system.clone())),
         (Some(c), _) => ("integrator.composition", c.name().to_string()),
         (None, Some(p)) => ("integrator.processing", p.name().to_string()),
     };
@@ -103,8 +108,8 @@ where
         });
     }
     Ok(match (&options.composition, &options.processing) {
-        (Some(c), _) => Boxed::new(Composition::new(inner, c.clone())?),
+        (Some(c), _) => Boxed::symmetric(Composition::new(inner, c.clone())?, system.clone()),
         (None, Some(p)) => Boxed::new(Processed::composition(inner, p.clone())?),
-        (None, None) => Boxed::new(inner),
+        (None, None) => Boxed::symmetric(inner, system.clone()),
     })
 }

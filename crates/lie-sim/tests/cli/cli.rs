@@ -259,7 +259,7 @@ fn trade_writes_a_work_precision_table_and_plot() {
         lines.next().unwrap(),
         "method,tau,theta,composition,tolerance,h,steps,ns_per_step,seconds,error,error_status,\
          reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,geometric,\
-         failure"
+         failure,epsilon"
     );
     // Every configuration the registry lists as applying to the free body (`lie-sim methods
     // --markdown`: lie-poisson, euler-poincare and euler-arnold × 2 τ × 3 θ, their compositions,

@@ -10,5 +10,6 @@ mod dense_output;
 mod imports;
 mod outputs;
 mod reference;
+mod reversible_steps;
 mod trade;
 mod vehicles;

@@ -261,7 +261,7 @@ fn a_reference_short_of_its_tolerance_is_one_line_and_nothing_below_it_is_measur
     let mut seen = 0;
     for line in out.lines() {
         let f: Vec<&str> = line.split_whitespace().collect();
-        if f.len() != 13 || f[4].parse::<f64>().is_err() {
+        if f.len() != 14 || f[4].parse::<f64>().is_err() {
             continue;
         }
         seen += 1;

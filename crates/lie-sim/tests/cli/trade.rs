@@ -26,11 +26,14 @@ impl Table {
         self.header.iter().position(|h| h == name).unwrap()
     }
 
-    /// The rows of `method` (the first four fields joined by commas, e.g. `rk4,-,-,-`).
+    /// The rows of `method` (the first four fields joined by commas, e.g. `rk4,-,-,-`) with
+    /// fixed steps or a tolerance: the same method's runs with reversible steps (their `epsilon`
+    /// filled) are tests/cli/reversible_steps.rs's.
     fn of(&self, method: &str) -> Vec<&Vec<String>> {
+        let epsilon = self.col("epsilon");
         self.rows
             .iter()
-            .filter(|r| r[..4].join(",") == method)
+            .filter(|r| r[..4].join(",") == method && r[epsilon].is_empty())
             .collect()
     }
 

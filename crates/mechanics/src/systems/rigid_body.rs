@@ -136,6 +136,16 @@ impl System<So3> for RigidBody {
     fn torque_rate(&self, force: &Vector3<f64>) -> f64 {
         torque_rate(self.inertia(), force)
     }
+    /// `G = (1/ρ) dρ/dt = Ω·Ω̇ / |Ω|²` for the provided density ρ = |Ω|, with
+    /// `Ω̇ = 𝕀⁻¹Π̇` and Euler's `Π̇ = ad*_Ω Π` (test `rigid_body_step_density_rate_is_the_closed_form`
+    /// against central differences): one cross product, where the provided form takes two
+    /// density evaluations at moved states. Odd in Π, as the reversible controller needs.
+    #[inline]
+    fn step_density_rate(&self, mu: &Vector3<f64>, _g: Option<&So3>) -> f64 {
+        let w = self.angular_velocity(mu);
+        let w_dot = self.angular_velocity(&So3::ad_dual_apply(&w, mu));
+        w.dot(&w_dot) / w.norm_squared()
+    }
 }
 
 /// `√(|τ|₂ / λ_min(𝕀))`: the rate at which the torque τ turns a body of inertia 𝕀 through a
