@@ -22,7 +22,9 @@ pub fn check_theta(theta: f64) -> Result<(), IntegratorError> {
     }
 }
 
-/// Refuses non-finite algebra vectors and group elements, and a missing g where V needs it.
+/// Refuses non-finite algebra vectors and group elements, a g that is not an element of G (its
+/// matrix refused by the group's checked constructor `LieGroup::from_matrix`, e.g. a non-rotation
+/// built with `from_matrix_unchecked`), and a missing g where V needs it.
 pub fn check_state<G: LieGroup, S: System<G>>(
     system: &S,
     v: &G::Algebra,
@@ -41,6 +43,11 @@ pub fn check_state<G: LieGroup, S: System<G>>(
         if !g.is_finite() {
             return Err(IntegratorError::NonFinite {
                 what: "configuration g",
+            });
+        }
+        if let Err(e) = G::from_matrix(&g.matrix()) {
+            return Err(IntegratorError::InvalidParameter {
+                reason: format!("configuration g is not an element of {}: {e}", G::name()),
             });
         }
     } else if system.needs_configuration() {

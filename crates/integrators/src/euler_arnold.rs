@@ -66,12 +66,21 @@ impl<G: LieGroup> EulerArnold<G> {
                 l[(i, j)] = s / l[(j, j)];
             }
         }
-        let inertia_inv =
-            inertia
-                .try_inverse()
-                .ok_or_else(|| IntegratorError::InvalidParameter {
-                    reason: "inertia is singular".into(),
-                })?;
+        // Inverted at unit scale (an exact power-of-two scaling, kept within the normal range):
+        // a positive definite 𝕀 of entries near f64::MAX (1e308·I) has a determinant that
+        // overflows, which an unscaled inversion takes for singularity.
+        let e = scale.log2().round().clamp(-1020.0, 1020.0) as i32;
+        let down = 2f64.powi(-e);
+        let inertia_inv = inertia
+            .scale(down)
+            .try_inverse()
+            .map(|inv| inv.scale(down))
+            .filter(|inv| inv.norm_max().is_finite() && inv.norm_max() > 0.0)
+            .ok_or_else(|| IntegratorError::InvalidParameter {
+                reason: format!(
+                    "inertia (largest entry {scale:e}) has no inverse representable in f64"
+                ),
+            })?;
         Ok(Self {
             inertia,
             inertia_inv,

@@ -112,7 +112,9 @@ pub(crate) fn rodrigues_coeffs(t2: f64) -> (f64, f64, f64) {
 fn huge_rotation(w: &Vector3<f64>, coeffs: impl Fn(f64) -> (f64, f64)) -> So3 {
     let m = w.amax();
     let u = w / m;
-    let t = m * u.norm();
+    // |ω| itself overflows when it exceeds f64::MAX (every component near it): θ is then taken
+    // as f64::MAX, whose ulp (2⁹⁷¹) is already far beyond 2π, so no angle is more exact.
+    let t = (m * u.norm()).min(f64::MAX);
     let n = u / u.norm();
     let (c1, c2) = coeffs(t);
     So3 {
@@ -609,8 +611,9 @@ impl LieGroup for So3 {
     /// entry with ω̂² = ωωᵀ − θ²I (`rodrigues_matrix`).
     ///
     /// Beyond |ω| ≈ 1.3·10¹⁵⁴, where θ² overflows, the rotation is taken about the unit axis with
-    /// `sin θ`, `1 − cos θ` of the (finite) θ (`huge_rotation`): a rotation, never NaN — though
-    /// at such angles the ulp of θ exceeds 2π, so any angle about that axis is as good. Non-finite
+    /// `sin θ`, `1 − cos θ` of the (finite) θ (`huge_rotation`; θ = f64::MAX where |ω| itself
+    /// exceeds it): a rotation, never NaN — though at such angles the ulp of θ exceeds 2π, so any
+    /// angle about that axis is as good. Non-finite
     /// ω gives a non-finite matrix (the integrators refuse it with an error).
     ///
     /// Always inlined (the huge and trigonometric branches are functions of their own): out of

@@ -318,9 +318,41 @@ pub fn special_orthogonal(field: &str, r: &[f64], n: usize) -> Result<(), FieldE
     Ok(())
 }
 
+/// The scene key that accepts an inertia no rigid body has (see [`inertia3`]).
+pub const GENERALIZED_INERTIA_KEY: &str = "generalized_inertia";
+
 /// A 3×3 inertia at `field`: 3 positive principal moments or a symmetric positive definite
-/// matrix.
-pub fn inertia3(field: &str, raw: &RawInertia) -> Result<Matrix3<f64>, FieldError> {
+/// matrix, whose principal moments satisfy the triangle inequality of a rigid body (each at most
+/// the sum of the other two: I₃ = ∫(x² + y²) dm ≤ I₁ + I₂ = ∫(x² + y² + 2z²) dm), unless
+/// `generalized` (the scene's `generalized_inertia = true`: a generalized inertia, e.g. of a
+/// model reduced from a larger system). Equality (a flat plate) is accepted up to rounding.
+pub fn inertia3(
+    field: &str,
+    raw: &RawInertia,
+    generalized: bool,
+) -> Result<Matrix3<f64>, FieldError> {
+    let m = inertia3_spd(field, raw)?;
+    if !generalized {
+        let mut d: Vec<f64> = m.symmetric_eigenvalues().iter().copied().collect();
+        d.sort_by(f64::total_cmp);
+        // relative: 1e308·I must not overflow the sum
+        if d[2] / 2.0 > (d[0] / 2.0 + d[1] / 2.0) * (1.0 + 1e-12) {
+            return Err((
+                field.into(),
+                format!(
+                    "principal moments {} > {} + {} break the triangle inequality of a rigid \
+                     body (each at most the sum of the other two); set {} = true in [system] \
+                     (or the body's entry) for a generalized inertia",
+                    d[2], d[0], d[1], GENERALIZED_INERTIA_KEY
+                ),
+            ));
+        }
+    }
+    Ok(m)
+}
+
+/// [`inertia3`] without the triangle inequality.
+fn inertia3_spd(field: &str, raw: &RawInertia) -> Result<Matrix3<f64>, FieldError> {
     match raw {
         RawInertia::Scalar(_) => Err((
             field.into(),

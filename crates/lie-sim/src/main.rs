@@ -48,6 +48,7 @@ mod fields;
 mod forces;
 #[cfg(test)]
 mod harness;
+mod input;
 mod invariants;
 mod ladder;
 mod listing;
@@ -196,7 +197,8 @@ enum Command {
     Sweep {
         /// The scene file (TOML) with a [sweep] table.
         scene: PathBuf,
-        /// Summary CSV (default: `target/lie-sim/<scene>-sweep.csv`).
+        /// Summary CSV (default: `target/lie-sim/<scene>-sweep.csv`; for shard i of n,
+        /// `<scene>-sweep-shard-i-of-n.csv`, so that shards never share a default file).
         #[arg(short, long)]
         out: Option<PathBuf>,
         /// Run only shard i of n, 0-based (0 ≤ i < n): the members ⌊iN/n⌋ … ⌊(i+1)N/n⌋ − 1.
@@ -376,6 +378,9 @@ struct OverrideArgs {
     /// Replace the scene's duration T.
     #[arg(long)]
     duration: Option<f64>,
+    /// The flag that set `duration` (`--horizon` sets it too), for messages.
+    #[arg(skip)]
+    duration_flag: Option<&'static str>,
     /// Replace the scene's step h.
     #[arg(long)]
     step: Option<f64>,
@@ -392,6 +397,7 @@ impl From<OverrideArgs> for Overrides {
     fn from(a: OverrideArgs) -> Self {
         Overrides {
             duration: a.duration,
+            duration_flag: a.duration_flag.or(a.duration.map(|_| "--duration")),
             step: a.step,
             stride: a.stride,
         }
@@ -809,12 +815,23 @@ fn cmd_sweep(
             spec.seed = s;
         }
     }
-    let out = out.unwrap_or_else(|| default_path(&stem, "-sweep.csv"));
-    output::refuse_clobbering(&[&out], &[scene_path])?;
     let shard = match shard {
         Some(s) => s,
         None => slurm_shard()?.unwrap_or_else(Shard::all),
     };
+    // A shard's default name carries the shard, so that shards run side by side without --out
+    // do not replace each other's file.
+    let out = out.unwrap_or_else(|| {
+        if shard.count() == 1 {
+            default_path(&stem, "-sweep.csv")
+        } else {
+            default_path(
+                &stem,
+                &format!("-sweep-shard-{}-of-{}.csv", shard.index(), shard.count()),
+            )
+        }
+    });
+    output::refuse_clobbering(&[&out], &[scene_path])?;
     let (spec, steps, h) = sweep::plan(&scene)?;
     sweep::estimate(&spec, shard, steps).check("sweep", overrides.allow_large)?;
     let spinner = show_progress().then(|| {
@@ -989,10 +1006,7 @@ fn cmd_choose(
     );
     if let Some(w) = write {
         let text = match scene_path {
-            Some(p) => std::fs::read_to_string(p).map_err(|source| SimError::Read {
-                path: p.to_path_buf(),
-                source,
-            })?,
+            Some(p) => input::read_text(p)?,
             None => scene::DEFAULT_SCENE.to_string(),
         };
         let chosen_text = choose::scene_with(&text, best, scene.duration)?;
@@ -1062,6 +1076,7 @@ fn main() -> ExitCode {
             Some(default_path("default", ".svg")),
             OverrideArgs {
                 duration: None,
+                duration_flag: None,
                 step: None,
                 stride: None,
                 allow_large: false,
@@ -1090,6 +1105,7 @@ fn main() -> ExitCode {
         }) => {
             if horizon.is_some() {
                 overrides.duration = horizon;
+                overrides.duration_flag = Some("--horizon");
             }
             cmd_trade(
                 scene.as_deref(),
@@ -1130,6 +1146,7 @@ fn main() -> ExitCode {
         }) => {
             if horizon.is_some() {
                 overrides.duration = horizon;
+                overrides.duration_flag = Some("--horizon");
             }
             cmd_choose(
                 scene.as_deref(),

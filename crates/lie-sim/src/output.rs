@@ -9,11 +9,15 @@
 //! - A symbolic link is followed: its target is written, the link stays a link.
 //! - A FIFO or a character device (`/dev/null`, `/dev/stdout`, a terminal) is written directly: it
 //!   cannot be replaced, and there is nothing to keep intact.
-//! - A directory, a socket or a block device is refused ([`SimError::Output`]).
+//! - A directory, a socket or a block device is refused ([`SimError::Output`]), and so is an
+//!   existing file the caller may not write (read-only to them): as `cp` does, it is left as it
+//!   is, although the directory would let the temporary file be renamed over it.
 //!
 //! [`refuse_clobbering`] refuses, before any work is done, an output that is one of the command's
 //! inputs (the same file, by device and inode, whatever the path: a symlink or hard link to the
-//! scene is caught) or the same file as another of its outputs (`--plot` equal to `--out`).
+//! scene is caught) or the same file as another of its outputs (`--plot` equal to `--out`), and
+//! every output [`AtomicFile::new`] would refuse: no command writes one output and then fails on
+//! the next.
 
 use crate::error::SimError;
 use std::fs::{File, OpenOptions};
@@ -125,8 +129,41 @@ pub fn refuse_clobbering(outputs: &[&Path], inputs: &[&Path]) -> Result<(), SimE
                 });
             }
         }
+        how_to_write(out, &target)?;
     }
     Ok(())
+}
+
+/// How the output `given` (its symbolic links followed: `resolved`) is written: `Some(old
+/// permissions)` through a temporary sibling (`Some(None)`: a new file), `None` directly (a FIFO
+/// or a character device). Refuses a directory, a socket or a block device, and an existing file
+/// the caller cannot open for writing (the check `cp` makes: it opens the file without
+/// truncating it, which changes nothing).
+fn how_to_write(
+    given: &Path,
+    resolved: &Path,
+) -> Result<Option<Option<std::fs::Permissions>>, SimError> {
+    let refuse = |why: &str| SimError::Output {
+        path: given.to_path_buf(),
+        why: why.into(),
+    };
+    match std::fs::metadata(resolved) {
+        Ok(m) if m.is_file() => match OpenOptions::new().write(true).open(resolved) {
+            Ok(_) => Ok(Some(Some(m.permissions()))),
+            Err(source) => Err(SimError::Write {
+                path: given.to_path_buf(),
+                source,
+            }),
+        },
+        Ok(m) if m.is_dir() => Err(refuse("it is a directory")),
+        Ok(m) if m.file_type().is_fifo() || m.file_type().is_char_device() => Ok(None),
+        Ok(_) => Err(refuse("it is a socket or a block device")),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(Some(None)),
+        Err(source) => Err(SimError::Write {
+            path: given.to_path_buf(),
+            source,
+        }),
+    }
 }
 
 /// How the target is written.
@@ -152,8 +189,8 @@ pub struct AtomicFile {
 
 impl AtomicFile {
     /// Reserves `target`: follows symbolic links, decides how to write it (refusing a directory,
-    /// a socket or a block device), creates the missing parent directories, and removes stale
-    /// temporary files of dead processes beside it.
+    /// a socket, a block device or a file the caller may not write), creates the missing parent
+    /// directories, and removes stale temporary files of dead processes beside it.
     pub fn new(target: &Path) -> Result<Self, SimError> {
         let given = target.to_path_buf();
         let werr = |source| SimError::Write {
@@ -161,19 +198,8 @@ impl AtomicFile {
             source,
         };
         let resolved = resolve(target)?;
-        let refuse = |why: &str| SimError::Output {
-            path: given.clone(),
-            why: why.into(),
-        };
         // Some(old permissions) for a regular or missing file, None for a FIFO or device.
-        let atomic = match std::fs::metadata(&resolved) {
-            Ok(m) if m.is_file() => Some(Some(m.permissions())),
-            Ok(m) if m.is_dir() => return Err(refuse("it is a directory")),
-            Ok(m) if m.file_type().is_fifo() || m.file_type().is_char_device() => None,
-            Ok(_) => return Err(refuse("it is a socket or a block device")),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Some(None),
-            Err(e) => return Err(werr(e)),
-        };
+        let atomic = how_to_write(target, &resolved)?;
         let mode = match atomic {
             None => Mode::Direct,
             Some(permissions) => {

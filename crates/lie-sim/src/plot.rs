@@ -44,10 +44,7 @@ impl Trajectory {
 /// Reads a CSV written by `lie-sim run`: a header with at least `t` and `energy`, then rows of
 /// numbers of the header's length.
 pub fn read_csv(path: &Path) -> Result<Trajectory, SimError> {
-    let text = std::fs::read_to_string(path).map_err(|source| SimError::Read {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let text = crate::input::read_text(path)?;
     parse_csv(&text, &path.display().to_string())
 }
 

@@ -644,10 +644,7 @@ fn refined(
 /// group dimensions of the scene. Its estimated error is `tolerance`.
 pub fn from_csv(path: &Path, scene: &Scene, tolerance: f64) -> Result<Reference, SimError> {
     let label = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| SimError::Read {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let text = crate::input::read_text(path)?;
     let traj = crate::plot::parse_csv(&text, &label)?;
     let line = text
         .lines()
@@ -775,6 +772,7 @@ mod tests {
             .join("../../examples/scenes/detumbling-spacecraft.toml");
         let overrides = crate::scene::Overrides {
             duration: Some(8.0),
+            duration_flag: None,
             step: None,
             stride: None,
         };
@@ -815,6 +813,7 @@ mod tests {
                 .join(name);
             let overrides = crate::scene::Overrides {
                 duration: Some(duration),
+                duration_flag: None,
                 step: None,
                 stride: None,
             };

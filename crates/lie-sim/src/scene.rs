@@ -8,6 +8,9 @@
 //! [system]
 //! kind = "free-rigid-body"          # a system of `crate::systems` (`lie-sim methods` lists them)
 //! inertia = [1.0, 2.0, 3.0]         # the kind's own keys (its module's page)
+//! # generalized_inertia = true      # every 3×3 inertia must be a rigid body's (each principal
+//! #                                   #   moment at most the sum of the other two); this accepts
+//! #                                   #   any positive definite one (crate::fields::inertia3)
 //!
 //! [initial]
 //! momentum = [0.01, 1.0, 0.01]      # body momentum μ ∈ 𝔤* (Π for SO(3)), and the kind's state:
@@ -309,6 +312,9 @@ pub struct EventSpec {
 pub struct Overrides {
     /// Replaces `integrator.duration`.
     pub duration: Option<f64>,
+    /// The flag that gave `duration` (`--duration`, `--horizon`), named in messages about it in
+    /// place of `integrator.duration`.
+    pub duration_flag: Option<&'static str>,
     /// Replaces `integrator.step`.
     pub step: Option<f64>,
     /// Replaces `output.stride`.
@@ -379,10 +385,7 @@ fn read<T: DeserializeOwned>(text: &str, label: &str) -> Result<T, SimError> {
 impl Scene {
     /// Reads and checks a scene file.
     pub fn load(path: &Path, overrides: Overrides) -> Result<Self, SimError> {
-        let text = std::fs::read_to_string(path).map_err(|source| SimError::Read {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = crate::input::read_text(path)?;
         let label = path.display().to_string();
         let stem = path
             .file_stem()
@@ -414,8 +417,10 @@ impl Scene {
         }
         let kind = read::<Peek>(text, label)?.system.kind;
         let (system, mut common) = with_kind(kind, ReadAs { text, label })?;
+        let mut duration_name = "integrator.duration";
         if let Some(d) = overrides.duration {
             common.integrator.duration = d;
+            duration_name = overrides.duration_flag.unwrap_or("--duration");
         }
         if let Some(h) = overrides.step {
             common.integrator.step = Some(h);
@@ -428,11 +433,19 @@ impl Scene {
             field,
             message,
         };
-        Self::checked(system.map_err(bad)?, common, label, stem)
+        Self::checked(system.map_err(bad)?, common, label, stem, duration_name)
     }
 
     /// Checks the values of the common tables against the checked system.
-    fn checked(mut system: System, raw: Common, label: &str, stem: &str) -> Result<Self, SimError> {
+    /// `duration_name`: where the duration T came from (`integrator.duration`, or the flag that
+    /// replaced it), for messages.
+    fn checked(
+        mut system: System,
+        raw: Common,
+        label: &str,
+        stem: &str,
+        duration_name: &str,
+    ) -> Result<Self, SimError> {
         let bad = |field: &str, message: String| SimError::Invalid {
             path: label.into(),
             field: field.into(),
@@ -456,7 +469,7 @@ impl Scene {
         }
 
         let it = &raw.integrator;
-        let duration = positive("integrator.duration", it.duration).map_err(|(f, m)| bad(&f, m))?;
+        let duration = positive(duration_name, it.duration).map_err(|(f, m)| bad(&f, m))?;
         let stepping = RawStepping {
             step: it.step,
             tolerance: it.tolerance,
@@ -464,14 +477,15 @@ impl Scene {
             atol: it.atol,
             epsilon: it.epsilon,
         };
-        let (step, variable) =
-            match check_stepping(&stepping, it.method, duration).map_err(|(f, m)| bad(&f, m))? {
-                StepChoice::Fixed(h) => (h, None),
-                StepChoice::Variable(v) => (duration, Some(v)),
-            };
+        let (step, variable) = match check_stepping(&stepping, it.method, duration, duration_name)
+            .map_err(|(f, m)| bad(&f, m))?
+        {
+            StepChoice::Fixed(h) => (h, None),
+            StepChoice::Variable(v) => (duration, Some(v)),
+        };
         if duration / step > MAX_STEPS {
             return Err(bad(
-                "integrator.duration",
+                duration_name,
                 format!(
                     "duration / step = {:.3e} steps exceeds the limit {MAX_STEPS:.0e}",
                     duration / step

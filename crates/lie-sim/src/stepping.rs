@@ -63,8 +63,14 @@ fn methods_stepping(stepping: Stepping) -> String {
         .join(", ")
 }
 
-/// `raw` checked against what `method` takes, for a run of `duration`.
-pub fn check(raw: &RawStepping, method: MethodId, duration: f64) -> Result<StepChoice, FieldError> {
+/// `raw` checked against what `method` takes, for a run of `duration` (given by the field or
+/// flag `duration_name`).
+pub fn check(
+    raw: &RawStepping,
+    method: MethodId,
+    duration: f64,
+    duration_name: &str,
+) -> Result<StepChoice, FieldError> {
     let field = |f: &str| format!("integrator.{f}");
     let given_tolerance = [
         ("tolerance", raw.tolerance),
@@ -123,8 +129,8 @@ pub fn check(raw: &RawStepping, method: MethodId, duration: f64) -> Result<StepC
                 return Err((
                     field("step"),
                     format!(
-                        "h = {step} exceeds the duration T = {duration}: give a step no longer \
-                         than the run (one step to T is step = duration)"
+                        "h = {step:?} exceeds the duration T = {duration:?} ({duration_name}): \
+                         give a step no longer than the run (one step to T is step = duration)"
                     ),
                 ));
             }
@@ -272,18 +278,29 @@ mod tests {
             ),
         ];
         for (r, key, value) in cases {
-            let (field, message) = check(r, dop, 10.0).unwrap_err();
+            let (field, message) = check(r, dop, 10.0, "integrator.duration").unwrap_err();
             assert_eq!(field, *key, "{r:?}: {message}");
             assert!(message.contains(value), "{r:?}: {message}");
         }
-        let (field, message) =
-            check(&raw(Some(0.1), Some(1e-8), None, None), MethodId::Rk4, 10.0).unwrap_err();
+        let (field, message) = check(
+            &raw(Some(0.1), Some(1e-8), None, None),
+            MethodId::Rk4,
+            10.0,
+            "integrator.duration",
+        )
+        .unwrap_err();
         assert_eq!(field, "integrator.tolerance", "{message}");
         assert!(
             message.contains("fixed step") && message.contains("rkmk-dop853"),
             "{message}"
         );
-        let (field, _) = check(&raw(None, None, None, None), MethodId::Rk4, 10.0).unwrap_err();
+        let (field, _) = check(
+            &raw(None, None, None, None),
+            MethodId::Rk4,
+            10.0,
+            "integrator.duration",
+        )
+        .unwrap_err();
         assert_eq!(field, "integrator.step");
     }
 
@@ -291,19 +308,34 @@ mod tests {
     fn a_tolerance_is_rtol_and_atol_and_a_step_is_fixed() {
         let dop = MethodId::RkmkDop853;
         assert_eq!(
-            check(&raw(None, Some(1e-8), None, None), dop, 1.0),
+            check(
+                &raw(None, Some(1e-8), None, None),
+                dop,
+                1.0,
+                "integrator.duration"
+            ),
             Ok(StepChoice::Variable(VariableSteps::Tolerance(
                 Tolerance::new(1e-8, 1e-8).unwrap()
             )))
         );
         assert_eq!(
-            check(&raw(None, None, Some(1e-6), Some(1e-9)), dop, 1.0),
+            check(
+                &raw(None, None, Some(1e-6), Some(1e-9)),
+                dop,
+                1.0,
+                "integrator.duration"
+            ),
             Ok(StepChoice::Variable(VariableSteps::Tolerance(
                 Tolerance::new(1e-6, 1e-9).unwrap()
             )))
         );
         assert_eq!(
-            check(&raw(Some(0.1), None, None, None), MethodId::Rk4, 1.0),
+            check(
+                &raw(Some(0.1), None, None, None),
+                MethodId::Rk4,
+                1.0,
+                "integrator.duration"
+            ),
             Ok(StepChoice::Fixed(0.1))
         );
     }
@@ -318,7 +350,12 @@ mod tests {
             ..raw(step, tol, None, None)
         };
         assert_eq!(
-            check(&with_epsilon(None, None, 0.05), MethodId::Splitting, 1.0),
+            check(
+                &with_epsilon(None, None, 0.05),
+                MethodId::Splitting,
+                1.0,
+                "integrator.duration"
+            ),
             Ok(StepChoice::Variable(VariableSteps::Reversible(0.05)))
         );
         let refused = [
@@ -354,7 +391,7 @@ mod tests {
             ),
         ];
         for (raw, method, key) in refused {
-            let (field, message) = check(&raw, method, 1.0).unwrap_err();
+            let (field, message) = check(&raw, method, 1.0, "integrator.duration").unwrap_err();
             assert_eq!(field, key, "{message}");
         }
     }

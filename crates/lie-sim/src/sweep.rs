@@ -247,6 +247,7 @@ pub fn estimate(spec: &SweepSpec, shard: Shard, steps: usize) -> crate::bounds::
     crate::bounds::Estimate {
         steps: members.saturating_mul(steps as u128),
         bytes: crate::bounds::Estimate::csv(members + 2, 12),
+        step_cost: 1,
     }
 }
 
@@ -373,10 +374,7 @@ fn merge_error(message: String) -> SimError {
 }
 
 fn read_shard(path: &Path) -> Result<ShardFile, SimError> {
-    let text = std::fs::read_to_string(path).map_err(|source| SimError::Read {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let text = crate::input::read_text(path)?;
     let p = path.display();
     let not_a_shard = || {
         merge_error(format!(

@@ -125,6 +125,7 @@ pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds:
             .saturating_mul(per_unit_h)
             .saturating_mul(repeats as u128),
         bytes: crate::bounds::Estimate::csv((candidates().len() * (ladder.len() + 1)) as u128, 15),
+        step_cost: 1,
     }
 }
 

@@ -159,6 +159,63 @@ fn nan_in_state_is_refused() {
     assert_eq!(lp.time(), 0.0);
 }
 
+/// An initial attitude that is not a rotation (a scaled matrix, a reflection, a shear — built
+/// with `from_matrix_unchecked`) is refused by every constructor and by `reset`, with the group's
+/// reason; the state stays as it was. (Before, every method accepted it and integrated it.)
+#[test]
+fn a_configuration_off_the_group_is_refused() {
+    use integrators::baselines::QuaternionRk4;
+    use integrators::splitting::Splitting;
+    use integrators::Rkmk4;
+    use mechanics::exact::ExactFreeBody;
+    let not_rotations = [
+        Matrix3::identity() * 2.0,
+        Matrix3::new(-1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
+        Matrix3::new(1.0, 0.1, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
+    ];
+    let off = |r: Result<(), IntegratorError>, name: &str, m: &Matrix3<f64>| match r {
+        Err(IntegratorError::InvalidParameter { reason }) => {
+            assert!(
+                reason.contains("not an element of SO(3)"),
+                "{name}: {reason}"
+            )
+        }
+        other => panic!("{name} accepted {m}: {other:?}"),
+    };
+    let pi = Vector3::new(0.3, 1.0, 0.2);
+    for m in &not_rotations {
+        let g = Some(So3::from_matrix_unchecked(m));
+        off(
+            LiePoisson::<So3, Cayley, _>::new(body(), 0.5, pi, g).map(|_| ()),
+            "lie-poisson",
+            m,
+        );
+        off(
+            EulerPoincare::<So3, ExpMap, _>::from_momentum(body(), 0.5, pi, g).map(|_| ()),
+            "euler-poincare",
+            m,
+        );
+        off(QuaternionRk4::new(body(), pi, g).map(|_| ()), "rk4", m);
+        off(Rkmk4::new(body(), pi, g).map(|_| ()), "rkmk4", m);
+        off(Splitting::new(body(), pi, g).map(|_| ()), "splitting", m);
+        off(ExactFreeBody::new(body(), pi, g).map(|_| ()), "exact", m);
+        let mut lp = LiePoisson::<So3, Cayley, _>::new(body(), 0.5, pi, None).unwrap();
+        off(lp.reset(0.0, pi, g), "lie-poisson reset", m);
+        assert!(lp.momentum() == pi && lp.configuration().is_none());
+    }
+    // a rotation rounded to a few digits is still one (the group's tolerance)
+    let r = So3::exp(&Vector3::new(0.3, -0.2, 0.9))
+        .matrix()
+        .map(|x| (x * 1e12).round() / 1e12);
+    assert!(LiePoisson::<So3, Cayley, _>::new(
+        body(),
+        0.5,
+        pi,
+        Some(So3::from_matrix_unchecked(&r))
+    )
+    .is_ok());
+}
+
 #[test]
 fn theta_outside_unit_interval_is_refused() {
     for theta in [-0.1, 1.5, f64::NAN] {
@@ -166,6 +223,20 @@ fn theta_outside_unit_interval_is_refused() {
             LiePoisson::<So3, Cayley, _>::new(body(), theta, Vector3::x(), None),
             Err(IntegratorError::InvalidTheta { .. })
         ));
+    }
+}
+
+/// An inertia near f64::MAX (1e308·I) is a valid inertia: accepted, with Ω = 𝕀⁻¹Π to round-off.
+/// (Before, its determinant overflowed and it was refused as "singular".)
+#[test]
+fn huge_and_tiny_inertias_are_accepted_not_called_singular() {
+    use integrators::System;
+    for s in [1e308, 1e-300] {
+        let b = RigidBody::principal(s, 0.5 * s, s).unwrap();
+        let pi = Vector3::new(0.1, 0.2, -0.1) * s;
+        let w = b.velocity(&pi);
+        let expected = Vector3::new(0.1, 0.4, -0.1);
+        assert!((w - expected).amax() < 1e-15, "{s:e}: {w}");
     }
 }
 

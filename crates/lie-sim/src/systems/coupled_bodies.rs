@@ -49,6 +49,10 @@ pub struct RawBody {
     pub mass: f64,
     /// Principal moments or a 3×3 matrix, about the centre of mass.
     pub inertia: RawInertia,
+    /// Accept principal moments that break the triangle inequality of a rigid body
+    /// (`fields::inertia3`); false by default.
+    #[serde(default)]
+    pub generalized_inertia: bool,
 }
 
 /// `{ between = [i, j], attachments = [a, b], stiffness, rest_length }`.
@@ -133,9 +137,10 @@ impl SceneSystem for CoupledBodies {
             .iter()
             .enumerate()
             .map(|(i, b)| {
+                let field = format!("system.bodies[{i}].inertia");
                 Ok((
                     positive(&format!("system.bodies[{i}].mass"), b.mass)?,
-                    inertia3(&format!("system.bodies[{i}].inertia"), &b.inertia)?,
+                    inertia3(&field, &b.inertia, b.generalized_inertia)?,
                 ))
             })
             .collect::<Result<Vec<_>, FieldError>>()?;
@@ -197,6 +202,29 @@ impl SceneSystem for CoupledBodies {
                 })
             })
             .collect::<Result<Vec<_>, FieldError>>()?;
+        // A spring of rest length L > 0 whose two attachment points coincide: its force
+        // κ (|d| − L) d/|d| has no direction at d = 0, and every step fails there whatever h.
+        for (k, sp) in springs.iter().enumerate() {
+            let [i, j] = sp.between;
+            let point = |b: usize, a: &Vector3<f64>| initial[b].position + initial[b].attitude * a;
+            let (pi, pj) = (point(i, &sp.attachments[0]), point(j, &sp.attachments[1]));
+            // to 12 digits of the positions: nearer, κL/|d| (the stiffness across d) is beyond
+            // what a step resolves
+            let scale = pi.norm().max(pj.norm()).max(sp.rest_length);
+            if sp.stiffness > 0.0 && sp.rest_length > 0.0 && (pi - pj).norm() <= 1e-12 * scale {
+                return Err((
+                    format!("system.springs[{k}].attachments"),
+                    format!(
+                        "the attachment points of bodies {i} and {j} coincide in the initial \
+                         state (at {:?}): the spring's direction, and so its force with \
+                         rest_length = {:?} > 0, is undefined there; move a body or an \
+                         attachment point",
+                        pi.as_slice(),
+                        sp.rest_length
+                    ),
+                ));
+            }
+        }
         Ok(Self {
             bodies,
             springs,

@@ -1,8 +1,9 @@
 //! `free-rigid-body`: the free rigid body on SO(3) (`mechanics::RigidBody`): Π' = Π × Ω,
 //! Ω = 𝕀⁻¹Π, R' = R Ω̂; with `[forces]` a body torque schedule and damping −D Ω.
 //!
-//! `[system]`: `inertia` (3 principal moments or a symmetric 3×3 matrix). `[initial]`: `momentum`
-//! Π (3), `attitude` (a rotation; the identity by default).
+//! `[system]`: `inertia` (3 principal moments or a symmetric 3×3 matrix, a rigid body's unless
+//! `generalized_inertia = true`). `[initial]`: `momentum` Π (3), `attitude` (a rotation; the
+//! identity by default).
 
 use super::common::{build_error, SceneSystem, Tag};
 use crate::error::SimError;
@@ -30,6 +31,10 @@ pub struct Params {
     _kind: Tag,
     /// 𝕀: principal moments or a symmetric positive definite matrix.
     pub inertia: RawInertia,
+    /// Accept principal moments that break the triangle inequality of a rigid body
+    /// (`fields::inertia3`); false by default.
+    #[serde(default)]
+    pub generalized_inertia: bool,
 }
 
 /// `[initial]`.
@@ -66,7 +71,7 @@ impl SceneSystem for FreeRigidBody {
 
     fn check(params: &Params, initial: &Initial) -> Result<Self, FieldError> {
         Ok(Self {
-            inertia: inertia3("system.inertia", &params.inertia)?,
+            inertia: inertia3("system.inertia", &params.inertia, params.generalized_inertia)?,
             momentum: vec3("initial.momentum", &initial.momentum)?,
             attitude: attitude3(&initial.attitude)?,
             forces: None,

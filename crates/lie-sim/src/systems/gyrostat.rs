@@ -31,6 +31,10 @@ pub struct Params {
     _kind: Tag,
     /// 𝕀, wheels locked.
     pub inertia: RawInertia,
+    /// Accept principal moments that break the triangle inequality of a rigid body
+    /// (`fields::inertia3`); false by default.
+    #[serde(default)]
+    pub generalized_inertia: bool,
     /// The wheels' axes, one `[x, y, z]` each.
     pub wheel_axes: Vec<[f64; 3]>,
     /// The wheels' axial inertias.
@@ -79,7 +83,7 @@ impl SceneSystem for Gyrostat {
     type Initial = Initial;
 
     fn check(params: &Params, initial: &Initial) -> Result<Self, FieldError> {
-        let inertia = inertia3("system.inertia", &params.inertia)?;
+        let inertia = inertia3("system.inertia", &params.inertia, params.generalized_inertia)?;
         let k = params.wheel_axes.len();
         if !WHEEL_COUNTS.contains(&k) {
             return Err((

@@ -29,6 +29,10 @@ pub struct Params {
     _kind: Tag,
     /// 𝕀 about the fixed point.
     pub inertia: RawInertia,
+    /// Accept principal moments that break the triangle inequality of a rigid body
+    /// (`fields::inertia3`); false by default.
+    #[serde(default)]
+    pub generalized_inertia: bool,
     /// m > 0.
     pub mass: f64,
     /// χ, body frame.
@@ -82,7 +86,7 @@ impl SceneSystem for HeavyTop {
         finite_all("system.center_of_mass", &params.center_of_mass)?;
         let gravity = gravity_down(Self::KIND, &params.gravity)?;
         Ok(Self {
-            inertia: inertia3("system.inertia", &params.inertia)?,
+            inertia: inertia3("system.inertia", &params.inertia, params.generalized_inertia)?,
             mass,
             center_of_mass: Vector3::from(params.center_of_mass),
             gravity,

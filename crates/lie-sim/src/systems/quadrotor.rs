@@ -34,6 +34,10 @@ pub struct Params {
     pub mass: f64,
     /// 𝕀 about the centre of mass.
     pub inertia: RawInertia,
+    /// Accept principal moments that break the triangle inequality of a rigid body
+    /// (`fields::inertia3`); false by default.
+    #[serde(default)]
+    pub generalized_inertia: bool,
     /// g ≥ 0 along −e₃.
     pub gravity: RawNumbers,
 }
@@ -82,7 +86,7 @@ impl SceneSystem for Quadrotor {
         momentum_of_len(Self::KIND, &initial.momentum, 6)?;
         Ok(Self {
             mass: positive("system.mass", params.mass)?,
-            inertia: inertia3("system.inertia", &params.inertia)?,
+            inertia: inertia3("system.inertia", &params.inertia, params.generalized_inertia)?,
             gravity: gravity_down(Self::KIND, &params.gravity)?,
             momentum: Vector6::from_column_slice(&initial.momentum),
             attitude: attitude3(&initial.attitude)?,

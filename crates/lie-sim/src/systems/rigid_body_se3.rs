@@ -30,6 +30,10 @@ pub struct Params {
     _kind: Tag,
     /// 𝕀 about the centre of mass.
     pub inertia: RawInertia,
+    /// Accept principal moments that break the triangle inequality of a rigid body
+    /// (`fields::inertia3`); false by default.
+    #[serde(default)]
+    pub generalized_inertia: bool,
     /// m > 0.
     pub mass: f64,
     /// GM ≥ 0 of a central body at the origin (default 0: the free body).
@@ -89,7 +93,7 @@ impl SceneSystem for RigidBodySe3 {
             ));
         }
         Ok(Self {
-            inertia: inertia3("system.inertia", &params.inertia)?,
+            inertia: inertia3("system.inertia", &params.inertia, params.generalized_inertia)?,
             mass,
             gravitational_parameter: gm,
             momentum: Vector6::from_column_slice(&initial.momentum),

@@ -38,6 +38,10 @@ pub struct Params {
     pub mass: f64,
     /// 𝕀 about the centre of gravity.
     pub inertia: RawInertia,
+    /// Accept principal moments that break the triangle inequality of a rigid body
+    /// (`fields::inertia3`); false by default.
+    #[serde(default)]
+    pub generalized_inertia: bool,
     /// r_G, body frame (default 0).
     #[serde(alias = "centre_of_mass")]
     pub center_of_mass: Option<[f64; 3]>,
@@ -115,7 +119,7 @@ impl SceneSystem for UnderwaterVehicle {
 
     fn check(params: &Params, initial: &Initial) -> Result<Self, FieldError> {
         let mass = positive("system.mass", params.mass)?;
-        let inertia = inertia3("system.inertia", &params.inertia)?;
+        let inertia = inertia3("system.inertia", &params.inertia, params.generalized_inertia)?;
         let center_of_gravity = Vector3::from(params.center_of_mass.unwrap_or([0.0; 3]));
         finite_all("system.center_of_mass", center_of_gravity.as_slice())?;
         let field = "system.added_mass";

@@ -7,6 +7,7 @@ mod batched_sweep;
 mod choose;
 mod cli;
 mod dense_output;
+mod edges;
 mod imports;
 mod outputs;
 mod reference;

@@ -67,12 +67,12 @@ fn scene_of(c: &ClosedForm) -> String {
     );
     match c.kind.as_str() {
         "top" => format!(
-            "[system]\nkind = \"free-rigid-body\"\ninertia = [{:?}, {:?}, {:?}]\n[initial]\n\
+            "[system]\nkind = \"free-rigid-body\"\ninertia = [{:?}, {:?}, {:?}]\ngeneralized_inertia = true\n[initial]\n\
              momentum = [{:?}, {:?}, {:?}]\n{attitude}\n{integrator}",
             p[0], p[0], p[1], p[2], p[3], p[4]
         ),
         "se3" => format!(
-            "[system]\nkind = \"rigid-body-se3\"\ninertia = [{:?}, {:?}, {:?}]\nmass = {:?}\n\
+            "[system]\nkind = \"rigid-body-se3\"\ninertia = [{:?}, {:?}, {:?}]\ngeneralized_inertia = true\nmass = {:?}\n\
              gravitational_parameter = 0.0\n[initial]\n\
              momentum = [{:?}, {:?}, {:?}, {:?}, {:?}, {:?}]\n{attitude}\n\
              position = [{:?}, {:?}, {:?}]\n{integrator}",
