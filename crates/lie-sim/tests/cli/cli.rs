@@ -306,8 +306,9 @@ fn trade_writes_a_work_precision_table_and_plot() {
         ("processed-lie-poisson,exp,0.5,blanes-casas-murua-6-11,", 2),
         ("processed-splitting,-,-,blanes-6,", 2),
         ("processed-kinetic-kick,-,-,blanes-casas-murua-6-13,", 2),
-        ("splitting,-,-,-,", 2),
-        ("splitting,-,-,kahan-li-6,", 2),
+        // Two steps, and two ε of reversible steps (the row's `Trade::reversible`).
+        ("splitting,-,-,-,", 4),
+        ("splitting,-,-,kahan-li-6,", 4),
         ("kinetic-kick,-,-,blanes-moan-6,", 2),
         ("exact,-,-,-,,0.2,1,", 1),
     ] {

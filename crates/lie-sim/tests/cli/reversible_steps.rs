@@ -54,7 +54,8 @@ fn step_range(out: &str) -> (f64, f64) {
 
 /// With ε the run lands on T exactly, writes the requested rows at exactly their times, and is
 /// as accurate as the method at h = ε/ρ: Strang's O(h²) phase error at ε = 0.01 (h ≈ 0.009)
-/// stays below 3e-4 over T = 20, and |Π|² is kept to round-off. The summary names ε and the
+/// stays below 3e-4 over T = 20, and |Π|² is kept to round-off (a random walk of ~2200
+/// roundings: 7e-14 measured, 1e-12 asserted). The summary names ε and the
 /// steps taken; on this body ρ is constant, so every step but the last is ε/ρ.
 #[test]
 fn a_scene_with_epsilon_runs_reversible_steps_to_t_exactly() {
@@ -76,7 +77,7 @@ fn a_scene_with_epsilon_runs_reversible_steps_to_t_exactly() {
             "t = {t}: {row:?}"
         );
         let casimir = row[1] * row[1] + row[2] * row[2] + row[3] * row[3];
-        assert!((casimir - 2.0).abs() < 1e-13, "t = {t}: |Π|² = {casimir}");
+        assert!((casimir - 2.0).abs() < 1e-12, "t = {t}: |Π|² = {casimir}");
     }
     // The summary prints 4 digits.
     let rho = 1.25f64.sqrt();
