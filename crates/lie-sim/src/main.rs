@@ -42,6 +42,8 @@ mod bounds;
 mod build;
 mod choose;
 mod error;
+#[cfg(test)]
+mod extremes;
 mod fields;
 mod forces;
 #[cfg(test)]

@@ -36,6 +36,7 @@ pub const ROW: Row = Row {
     second: true,
     marker: None,
     batch: None,
+    step_limit: None,
 };
 
 fn family(_: &Options) -> &'static Family {
