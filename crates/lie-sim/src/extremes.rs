@@ -350,7 +350,7 @@ impl Tally {
         if drift.0 > self.worst_invariant.0 {
             self.worst_invariant = (drift.0, format!("{what}: {}", drift.1));
         }
-        if !(drift.0 <= 1.0) {
+        if drift.0.is_nan() || drift.0 > 1.0 {
             self.wrong.push(format!(
                 "{what}: its {} drifts by {:.2e}, {:.1}× its bound {:.1e} after {n} base steps",
                 drift.1,
@@ -489,7 +489,7 @@ impl Job for Extremes<'_> {
                             if r > tally.worst_error.0 {
                                 tally.worst_error = (r, format!("{at}: error {e:.2e}"));
                             }
-                            if !(r <= 1.0) {
+                            if r.is_nan() || r > 1.0 {
                                 tally.wrong.push(format!(
                                     "{at}: error {e:.2e} at ωT = {} against the reference, \
                                      above its bound {bound:.2e} (order {})",
