@@ -34,7 +34,7 @@ use integrators::{GraggBulirschStoer, Integrator, MethodInfo, SolverConfig, Syst
 use lie_groups::{LieGroup, Vector};
 
 /// The distance of two states: relative in μ, in the group by its matrix (`FinalState::error`).
-fn distance<G: LieGroup>(a: (&G::Algebra, &G), b: (&G::Algebra, &G)) -> f64 {
+pub(crate) fn distance<G: LieGroup>(a: (&G::Algebra, &G), b: (&G::Algebra, &G)) -> f64 {
     let n = a.0.dim();
     let scale = (0..n)
         .map(|i| b.0.get(i).abs())
@@ -48,7 +48,24 @@ fn distance<G: LieGroup>(a: (&G::Algebra, &G), b: (&G::Algebra, &G)) -> f64 {
 }
 
 /// One-step errors below this are at round-off (relative to an O(1) state).
-const FLOOR: f64 = 3e-13;
+pub(crate) const FLOOR: f64 = 3e-13;
+
+/// The independent reference: Gragg–Bulirsch–Stoer (order 12) from (μ, g) over the time `t` in
+/// `substeps` equal steps; `None` where it refuses a step.
+pub(crate) fn reference<M: Model>(
+    model: &M,
+    mu: &Alg<M::G>,
+    g: &M::G,
+    t: f64,
+    substeps: usize,
+) -> Option<(Alg<M::G>, M::G)> {
+    let mut m =
+        GraggBulirschStoer::new(model.system().clone(), mu.clone(), Some(g.clone())).ok()?;
+    for _ in 0..substeps {
+        m.step(t / substeps as f64).ok()?;
+    }
+    Some((m.momentum(), m.configuration()?.clone()))
+}
 
 /// What one (method, model) pair measured.
 struct Measured {
@@ -62,7 +79,7 @@ struct Measured {
 
 /// The example's state moved off any special point (see the module page): every momentum
 /// component and a turn of g perturbed.
-fn off_special<G: LieGroup>(mu0: &G::Algebra, g0: Option<G>) -> (G::Algebra, G) {
+pub(crate) fn off_special<G: LieGroup>(mu0: &G::Algebra, g0: Option<G>) -> (G::Algebra, G) {
     let n = mu0.dim();
     let size = (0..n).map(|i| mu0.get(i).abs()).fold(1.0, f64::max);
     let mu = G::Algebra::from_fn(n, |i| {
@@ -93,15 +110,7 @@ impl Job for Measure<'_> {
         let omega = model.system().characteristic_rate(&mu, Some(&g));
         let config = SolverConfig::default();
         let make = |spec: &MethodSpec| build(spec, &config, model, mu.clone(), Some(g.clone()));
-        let reference = |h: f64, substeps: usize| {
-            let mut m =
-                GraggBulirschStoer::new(model.system().clone(), mu.clone(), Some(g.clone()))
-                    .unwrap();
-            for _ in 0..substeps {
-                m.step(h / substeps as f64).ok()?;
-            }
-            Some((m.momentum(), m.configuration()?.clone()))
-        };
+        let reference = |h: f64, substeps: usize| reference(model, &mu, &g, h, substeps);
         // The reference is trusted where 32 and 64 of its substeps agree to round-off.
         let trusted = |h: f64| match (reference(h, 32), reference(h, 64)) {
             (Some(a), Some(b)) => distance::<M::G>((&a.0, &a.1), (&b.0, &b.1)) < FLOOR,
@@ -188,7 +197,7 @@ const KNOWN: &[&str] = &[
 /// one-step errors of kinetic–kick (Blanes–Moan 4) and of the processed splitting methods fall
 /// at orders 3.0–3.5 at the steps the search lands on (local errors 9.0e-7, 7.7e-10, 4.9e-11 at
 /// hω = 3.2, /2, /4 for blanes-casas-murua-6-11 ∘ splitting), which is still to be explained.
-fn unforced(text: &str) -> String {
+pub(crate) fn unforced(text: &str) -> String {
     let mut out = String::new();
     let mut in_forces = false;
     for line in text.lines() {

@@ -44,6 +44,8 @@ mod choose;
 mod driven;
 mod driver;
 mod error;
+#[cfg(test)]
+mod extremes;
 mod fields;
 mod forces;
 #[cfg(test)]

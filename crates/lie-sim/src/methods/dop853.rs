@@ -37,6 +37,7 @@ pub const ROW: Row = Row {
     second: false,
     marker: Some(Marker::Diamond),
     batch: None,
+    step_limit: Some(4.0),
 };
 
 fn family(_: &Options) -> &'static Family {

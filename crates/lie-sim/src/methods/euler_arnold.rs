@@ -37,6 +37,7 @@ pub const ROW: Row = Row {
     second: false,
     marker: None,
     batch: None,
+    step_limit: Some(1.0),
 };
 
 fn family(_: &Options) -> &'static Family {

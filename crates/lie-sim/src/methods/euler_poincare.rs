@@ -34,6 +34,7 @@ pub const ROW: Row = Row {
     second: false,
     marker: None,
     batch: None,
+    step_limit: Some(1.0),
 };
 
 fn family(_: &Options) -> &'static Family {

@@ -39,6 +39,7 @@ pub const ROW: Row = Row {
     second: false,
     marker: Some(Marker::Diamond),
     batch: None,
+    step_limit: None,
 };
 
 fn family(_: &Options) -> &'static Family {

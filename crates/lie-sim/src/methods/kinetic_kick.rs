@@ -37,6 +37,7 @@ pub const ROW: Row = Row {
     second: true,
     marker: None,
     batch: None,
+    step_limit: None,
 };
 
 fn family(_: &Options) -> &'static Family {

@@ -44,6 +44,7 @@ pub const ROW: Row = Row {
     second: false,
     marker: None,
     batch: None,
+    step_limit: Some(0.5),
 };
 
 fn family(m: &Options) -> &'static Family {

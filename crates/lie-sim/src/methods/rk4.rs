@@ -34,6 +34,7 @@ pub const ROW: Row = Row {
     second: false,
     marker: None,
     batch: Some(Batched::Rk4),
+    step_limit: Some(2.5),
 };
 
 fn family(_: &Options) -> &'static Family {

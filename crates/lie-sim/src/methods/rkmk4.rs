@@ -34,6 +34,7 @@ pub const ROW: Row = Row {
     second: true,
     marker: None,
     batch: None,
+    step_limit: Some(2.0),
 };
 
 fn family(_: &Options) -> &'static Family {

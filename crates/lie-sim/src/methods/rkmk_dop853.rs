@@ -37,6 +37,7 @@ pub const ROW: Row = Row {
     second: true,
     marker: Some(Marker::Diamond),
     batch: None,
+    step_limit: Some(3.0),
 };
 
 fn family(_: &Options) -> &'static Family {

@@ -37,6 +37,7 @@ pub const ROW: Row = Row {
     second: true,
     marker: Some(Marker::Circle),
     batch: None,
+    step_limit: Some(2.0),
 };
 
 fn family(_: &Options) -> &'static Family {

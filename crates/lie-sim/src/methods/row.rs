@@ -95,6 +95,15 @@ pub struct Row {
     pub marker: Option<Marker>,
     /// The batched method its sweeps run with, where there is one.
     pub batch: Option<Batched>,
+    /// The largest step it takes on every valid state without refusing, as hω with ω the
+    /// system's characteristic rate |∂h/∂μ| (`integrators::System::characteristic_rate`; |Ω| on
+    /// a rigid body), for every configuration `trade` runs of it (its compositions' largest
+    /// substep included); `None`: any step. Beyond it a step may be refused
+    /// (`StepTooLarge`, `NoConvergence`), leaving the state as it was. Checked by the extremes
+    /// harness (`crate::extremes`).
+    // Read by that harness only, a test, until a command warns of a step beyond it.
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub step_limit: Option<f64>,
 }
 
 /// The θ values `trade` sweeps for a method that takes θ.

@@ -38,6 +38,7 @@ pub const ROW: Row = Row {
     second: false,
     marker: None,
     batch: Some(Batched::Strang),
+    step_limit: None,
 };
 
 fn family(_: &Options) -> &'static Family {
