@@ -281,7 +281,7 @@ fn rates_are_the_frequencies_of_the_motion() {
 
     // Spin about e₁ of a principal body with damping D = diag(d): Π₁ = Π₁(0) e^{−(d₁/I₁) t}; the
     // declared rate is the largest dᵢ/Iᵢ (here axis 1's), or the body's |Ω| when larger.
-    let body = RigidBody::principal(2.0, 3.0, 4.0).unwrap();
+    let body = RigidBody::principal([2.0, 3.0, 4.0]).unwrap();
     let damping =
         LinearDamping::<So3>::new(Matrix3::from_diagonal(&Vector3::new(1.0, 0.3, 0.4))).unwrap();
     let damped = Forced::new(body.clone(), damping);
