@@ -10,5 +10,6 @@ mod dense_output;
 mod imports;
 mod outputs;
 mod reference;
+mod results;
 mod trade;
 mod vehicles;
