@@ -263,7 +263,7 @@ fn free_body(c: &mut Criterion) {
     ));
     Scene::<_, false> {
         name: "free_body",
-        system: RigidBody::principal(2.0, 3.0, 4.0).unwrap(),
+        system: RigidBody::principal([2.0, 3.0, 4.0]).unwrap(),
         plain: QuaternionBody {
             inv_i: [0.5, 1.0 / 3.0, 0.25],
             mgchi: [0.0; 3],

@@ -87,7 +87,7 @@ fn batch_steps<K: batch::Kernel>(
 /// NO_SQUISH is a legitimate competitor: it keeps the energy and follows the Strang splitting's
 /// momentum to O(h²).
 fn check_no_squish(rotor: &NoSquish, pi0: Vector3<f64>, r0: So3) {
-    let body = RigidBody::principal(MOMENTS[0], MOMENTS[1], MOMENTS[2]).expect("body");
+    let body = RigidBody::principal([MOMENTS[0], MOMENTS[1], MOMENTS[2]]).expect("body");
     let mut a = rotor.clone();
     let mut s = Splitting::new(body, pi0, Some(r0)).expect("splitting");
     for _ in 0..200 {
@@ -100,7 +100,7 @@ fn check_no_squish(rotor: &NoSquish, pi0: Vector3<f64>, r0: So3) {
 
 fn free_body(c: &mut Criterion) {
     let (pis, rs) = states(N);
-    let body = RigidBody::principal(MOMENTS[0], MOMENTS[1], MOMENTS[2]).expect("body");
+    let body = RigidBody::principal([MOMENTS[0], MOMENTS[1], MOMENTS[2]]).expect("body");
     let mut g = c.benchmark_group("batch/free_body");
     g.throughput(Throughput::Elements(N as u64));
     let strang: Vec<_> = (0..N)
@@ -184,7 +184,7 @@ fn field(c: &mut Criterion) {
 }
 
 fn size(c: &mut Criterion) {
-    let body = RigidBody::principal(MOMENTS[0], MOMENTS[1], MOMENTS[2]).expect("body");
+    let body = RigidBody::principal([MOMENTS[0], MOMENTS[1], MOMENTS[2]]).expect("body");
     let model = BodyModel::free(&body).expect("model");
     let mut g = c.benchmark_group("batch/size");
     g.sample_size(10);

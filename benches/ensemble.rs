@@ -16,7 +16,7 @@ const TRAJECTORIES: usize = 256;
 const STEPS: usize = 1000;
 
 fn ensemble_throughput(c: &mut Criterion) {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).expect("valid inertia");
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).expect("valid inertia");
     let mu0: Vec<Vector3<f64>> = momenta_on_sphere(3, 1.0, TRAJECTORIES, 1).expect("sphere");
     let sweep = Ensemble::new(mu0, 0.01, STEPS).expect("valid sweep");
     let build = |_: usize, mu: &Vector3<f64>| {

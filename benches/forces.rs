@@ -50,7 +50,7 @@ fn bench_warm<I: Integrator + Clone>(
 const WARM: usize = 10;
 
 fn forces(c: &mut Criterion) {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let g0 = Some(So3::exp(&Vector3::new(0.3, -0.5, 0.8)));
     let torque = BodyTorque::<So3>::constant(Vector3::new(0.1, -0.05, 0.2)).unwrap();

@@ -76,7 +76,7 @@ fn baselines<S: System<So3> + Clone>(
 }
 
 fn rigid_body(c: &mut Criterion) {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let mut group = c.benchmark_group("rigid_body/step");
     // The plain competitor in the same run (benches/common/hand_rk4.rs).

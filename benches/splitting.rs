@@ -62,7 +62,7 @@ fn hand_rk4<const GRAVITY: bool>(
 }
 
 fn free_body(c: &mut Criterion) {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let mut group = c.benchmark_group("trade/free_body");
     let mut hand = hand_rk4::<false>([1.0, 2.0, 3.0], Vector3::zeros(), pi0);

@@ -15,7 +15,7 @@ use std::time::Instant;
 
 fn run<T: Tau<So3>>(theta: f64, steps: usize) {
     let h = 0.01;
-    let body = RigidBody::principal(1.0, 2.0, 3.0).expect("valid inertia");
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).expect("valid inertia");
     let pi0 = Vector3::new(0.6, 1.0, 0.8);
     let mut lp = LiePoisson::<So3, T, _>::new(body, theta, pi0, Some(So3::identity()))
         .expect("valid initial state");

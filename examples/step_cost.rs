@@ -132,7 +132,7 @@ fn main() -> Result<(), IntegratorError> {
         eprintln!("usage: step_cost <free|top>/<method> <steps>");
         std::process::exit(2);
     };
-    let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+    let body = RigidBody::principal([1.0, 2.0, 3.0])?;
     let x = if let Some(m) = method.strip_prefix("free/modified/") {
         let p: Vec<&str> = m.split('/').collect();
         let [tau, theta, order] = p.as_slice() else {

@@ -198,7 +198,7 @@ fn print_row(r: &Row) {
 }
 
 fn main() {
-    let body = RigidBody::principal(INERTIA[0], INERTIA[1], INERTIA[2]).unwrap();
+    let body = RigidBody::principal([INERTIA[0], INERTIA[1], INERTIA[2]]).unwrap();
     let start = Instant::now();
     let fine = reference_rk4(T_ERROR, 100_000);
     let coarse = reference_rk4(T_ERROR, 50_000);

@@ -42,7 +42,7 @@ fn gap<const GRAVITY: bool, S: System<So3>>(system: S, mgchi: Vector3<f64>) -> (
 #[test]
 fn the_free_body_competitor_follows_quaternion_rk4() {
     let (dpi, dr) = gap::<false, _>(
-        RigidBody::principal(MOMENTS[0], MOMENTS[1], MOMENTS[2]).unwrap(),
+        RigidBody::principal([MOMENTS[0], MOMENTS[1], MOMENTS[2]]).unwrap(),
         Vector3::zeros(),
     );
     assert!(dpi < 1e-13 && dr < 1e-13, "Π gap {dpi:e}, R gap {dr:e}");

@@ -229,6 +229,31 @@ pub fn all() -> Vec<Generator> {
             }),
         },
         Generator {
+            name: "slew-run",
+            about: "the reaction-wheel slew's run summary: the angle the platform turns, the \
+                    energy change and the motors' work (docs/vehicles.md)",
+            takes: "1 s",
+            how: How::Output(Output {
+                runs: &[&[
+                    "run",
+                    "--release",
+                    "-q",
+                    "-p",
+                    "lie-sim",
+                    "--",
+                    "run",
+                    "examples/scenes/reaction-wheel-slew.toml",
+                ]],
+                at: At {
+                    file: VEHICLES,
+                    part: "",
+                },
+                markdown: false,
+                drop: &["  wall time"],
+                out: None,
+            }),
+        },
+        Generator {
             name: "methods",
             about: "`lie-sim methods --markdown`: the method registry, each configuration's \
                     MethodInfo on the example scenes, and the systems",

@@ -38,7 +38,7 @@
 //! use mechanics::RigidBody;
 //! use nalgebra::Vector3;
 //!
-//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! let pis: Vec<_> = (0..100).map(|i| Vector3::new(1.0, 0.01 * i as f64, 0.3)).collect();
 //! let mut b = Batch::new(Strang::new(BodyModel::free(&body)?), &pis, &[So3::identity()], Level::detect())?;
 //! b.run(0.01, 1000)?;

@@ -46,7 +46,7 @@
 //! use lie_groups::{Cayley, So3};
 //! use nalgebra::Vector3;
 //!
-//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! let base = LiePoisson::<So3, Cayley, _>::new(body, 0.5, Vector3::new(0.5, 1.0, 0.2), None)?;
 //! // Order 6 from 9 steps of the order-2 θ = ½ scheme.
 //! let mut psi = Composition::new(base, CompositionScheme::kahan_li_6())?;

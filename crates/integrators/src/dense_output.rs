@@ -25,7 +25,7 @@
 //! use nalgebra::Vector3;
 //!
 //! // A symmetric top: Π₁ = cos(t/2) falls through 0 at t = π.
-//! let top = RigidBody::principal(1.0, 1.0, 2.0).unwrap();
+//! let top = RigidBody::principal([1.0, 1.0, 2.0]).unwrap();
 //! let mut lp = LiePoisson::<So3, Cayley, _>::new(top.clone(), 0.5, Vector3::new(1.0, 0.0, 1.0),
 //!     Some(So3::identity())).unwrap();
 //! let mut samples = Vec::new();

@@ -25,7 +25,7 @@
 //! use lie_groups::{Cayley, So3};
 //! use nalgebra::Vector3;
 //!
-//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! let mu0: Vec<Vector3<f64>> = momenta_on_sphere(3, 1.0, 8, 42)?;
 //! let sweep = Ensemble::new(mu0, 0.01, 100)?;
 //! let build = |_i: usize, mu: &Vector3<f64>| {

@@ -26,7 +26,7 @@
 //! }
 //! impl LiftedMap<So3> for MixedMidpoint {}
 //!
-//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! let xi0 = Vector3::new(0.5, 0.5, 0.2 / 3.0);
 //! let mut ep = TangentLiftIntegrator::with_map(body, MixedMidpoint, xi0, Some(So3::identity()))?;
 //! ep.step(0.05)?;
@@ -115,7 +115,7 @@ use lie_groups::{LieGroup, Operator, Vector};
 /// use lie_groups::{ExpMap, So3, LieGroup};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+/// let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
 /// let mut ep = EulerPoincare::<So3, ExpMap, _>::new(body, 0.5, Vector3::new(1.0, 0.05, 0.2),
 ///                                                  Some(So3::identity())).unwrap();
 /// ep.step(0.01).unwrap();

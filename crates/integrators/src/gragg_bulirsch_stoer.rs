@@ -153,7 +153,7 @@ pub fn dexp_left_inv_series<G: LieGroup>(
 /// use nalgebra::Vector3;
 ///
 /// // A body spinning about its principal axis e₃: Π constant, R(t) = exp(t Π₃/I₃ ê₃).
-/// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+/// let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 /// let mut gbs = GraggBulirschStoer::new(body, Vector3::new(0.0, 0.0, 3.0), Some(So3::identity()))?;
 /// for _ in 0..10 {
 ///     gbs.step(0.1)?;

@@ -119,7 +119,7 @@
 //! use lie_groups::{Cayley, LieGroup, So3};
 //! use nalgebra::Vector3;
 //!
-//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! let pi0 = Vector3::new(0.5, 1.0, 0.2);
 //! // θ = ½, τ = Cayley, reconstructing R(t) from R(0) = I.
 //! let mut lp = LiePoisson::<So3, Cayley, _>::new(body, 0.5, pi0, Some(So3::identity()))?;

@@ -58,7 +58,7 @@
 //! }
 //! impl LiftedMap<So3> for ExpCayley {}
 //!
-//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! let pi0 = Vector3::new(0.5, 1.0, 0.2);
 //! let mut lp = CotangentLiftIntegrator::with_map(body, ExpCayley, pi0, Some(So3::identity()))?;
 //! for _ in 0..100 {
@@ -98,7 +98,7 @@ use lie_groups::{LieGroup, Operator, Vector};
 /// use lie_groups::{Cayley, So3, LieGroup};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+/// let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
 /// let mut lp = LiePoisson::<So3, Cayley, _>::new(body, 0.5, Vector3::new(1.0, 0.1, 0.5),
 ///                                               Some(So3::identity())).unwrap();
 /// lp.step(0.01).unwrap();

@@ -2,6 +2,8 @@
 //! reversible steps), with its system, seen as a [`Simulation`].
 
 use crate::driver::Driver;
+use crate::attitude;
+use crate::sim::{attitudes_of, power_of};
 use crate::sim::{group_side, read_group, read_spatial_momentum, write_row, write_vector};
 use crate::sim::{SimGroup, Simulation};
 use integrators::adaptive::Stats;
@@ -63,6 +65,20 @@ where
     }
     fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
         self.system.conserved_momentum_map()
+    }
+    fn power(&self) -> Option<f64> {
+        let m = self.driver.current();
+        power_of(&self.system, m.time(), &m.momentum(), m.configuration())
+    }
+    fn bodies(&self) -> usize {
+        attitudes_of(self.driver.current().configuration())
+    }
+    fn read_attitudes(&self, out: &mut [f64]) -> bool {
+        self.driver
+            .current()
+            .configuration()
+            .map(|g| attitude::write_all(g, out))
+            .is_some()
     }
     fn info(&self) -> MethodInfo {
         self.driver.current().info()

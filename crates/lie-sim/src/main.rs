@@ -4,7 +4,9 @@
 //! ```text
 //! lie-sim                                   run the embedded default scene (tumbling rigid body)
 //! lie-sim run SCENE.toml --out traj.csv     run a scene, write its trajectory as CSV
-//! lie-sim plot traj.csv --out plot.svg      energy error, Casimir error and momentum against time
+//! lie-sim run SCENE.toml --reference r.csv  … and its error at T as `trade` measures it
+//! lie-sim plot traj.csv --out plot.svg      energy error, Casimir error, momentum and attitude
+//!                                           against time
 //! lie-sim trade SCENE.toml                  work-precision table of every method, CSV and SVG
 //! lie-sim sweep SCENE.toml --out s.csv      the scene's [sweep] ensemble on every core, one row
 //!         [--shard i/n] [--threads k]       per trajectory; shard i of n only (0-based)
@@ -37,12 +39,14 @@ fn show_progress() -> bool {
     !quiet() && std::io::stderr().is_terminal()
 }
 
+mod attitude;
 mod batched;
 mod bounds;
 mod build;
 mod choose;
 mod driven;
 mod driver;
+mod columns;
 mod error;
 #[cfg(test)]
 mod extremes;
@@ -101,6 +105,23 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Run a scene and write its trajectory as CSV (and optionally an SVG plot).
+    ///
+    /// The CSV's columns: t, mu1 … muN (body momentum μ), g11 … (the group element's matrix,
+    /// row-major, where g is reconstructed), energy, casimir (where the system has one), power and
+    /// work (with [forces]: P = ⟨F, ξ⟩ and W = ∫P dt by the trapezoid rule over the steps), then
+    /// each body's attitude: the unit quaternion qw, qx, qy, qz (scalar first, R = R(q) maps body
+    /// to space, qw ≥ 0) and the rotation vector rv1, rv2, rv3 (φ = θ n, θ ∈ [0, π] the rotation
+    /// angle, R = exp(φ̂)); `_k` suffixes for several bodies. Columns before power keep their
+    /// names and places.
+    ///
+    /// The summary reports, without forces, the energy error max |E − E₀|/|E₀|; with forces, the
+    /// energy change E(T) − E₀ (not an error: the forces' work), the work W, and the energy
+    /// balance error max |E − E₀ − W|/max|E| (the method's error plus the quadrature's O(h²)).
+    ///
+    /// With --reference FILE or --check, it also reports the error at T exactly as `lie-sim
+    /// trade` measures it: max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞)), the
+    /// group term where both reconstruct g; below the reference's estimated error it is
+    /// unresolved.
     Run {
         /// The scene file (TOML); the embedded default scene when left out.
         scene: Option<PathBuf>,
@@ -110,10 +131,18 @@ enum Command {
         /// Also draw the trajectory plot to this SVG.
         #[arg(long)]
         plot: Option<PathBuf>,
+        /// Also compare the state at T with the trade's own reference (the exact flow on the
+        /// free rigid body without forces, Gragg–Bulirsch–Stoer elsewhere; see `lie-sim trade
+        /// --help`) and report the error at T; implied by --reference.
+        #[arg(long)]
+        check: bool,
+        #[command(flatten)]
+        reference: ReferenceArgs,
         #[command(flatten)]
         overrides: OverrideArgs,
     },
-    /// Plot a trajectory CSV written by `run`: energy error, Casimir error and momentum against t.
+    /// Plot a trajectory CSV written by `run`: energy error (with forces: the energy balance
+    /// E − E₀ − W), Casimir error, momentum and attitude (rotation angle, quaternion) against t.
     Plot {
         /// The trajectory CSV.
         csv: PathBuf,
@@ -132,7 +161,9 @@ enum Command {
     /// order-8 method reaches the 1e-13 reference floor over T, at most 10 levels at ratio 2
     /// (--levels fixes the count); finest levels are dropped when the work limit would be
     /// exceeded. Each run reports the error at T and the
-    /// maximum relative energy, Casimir and spatial momentum-map errors over the run.
+    /// maximum relative energy, Casimir and spatial momentum-map errors over the run. The error
+    /// at T: max(‖μ − μ_ref‖_∞ / ‖μ_ref‖_∞, ‖g − g_ref‖_∞ / max(1, ‖g_ref‖_∞)), the group term
+    /// where both reconstruct g (`lie-sim run --reference` reports the same for one run).
     ///
     /// The reference, made independently of every method in the table: the exact flow on the free
     /// rigid body without forces; elsewhere Gragg–Bulirsch–Stoer extrapolation (order 12) on the
@@ -283,8 +314,8 @@ enum Command {
     },
 }
 
-/// How the reference of `trade` and `choose` (`--metric error`) is made (see `lie-sim trade
-/// --help`).
+/// How the reference of `trade`, `choose` (`--metric error`) and `run --check` is made (see
+/// `lie-sim trade --help`).
 #[derive(Args, Debug, Clone)]
 struct ReferenceArgs {
     /// The relative agreement two successive refinements of the reference must reach (in the
@@ -437,6 +468,7 @@ fn cmd_run(
     scene_path: Option<&Path>,
     out: Option<PathBuf>,
     plot_path: Option<PathBuf>,
+    check: Option<&ReferenceArgs>,
     overrides: OverrideArgs,
 ) -> Result<(), SimError> {
     let (scene, stem) = load(scene_path, overrides)?;
@@ -444,7 +476,11 @@ fn cmd_run(
     let outputs: Vec<&Path> = std::iter::once(out.as_path())
         .chain(plot_path.as_deref())
         .collect();
-    output::refuse_clobbering(&outputs, scene_path.as_slice())?;
+    let inputs: Vec<&Path> = scene_path
+        .into_iter()
+        .chain(check.and_then(|r| r.reference.as_deref()))
+        .collect();
+    output::refuse_clobbering(&outputs, &inputs)?;
     if plot_path.is_some() && !output::is_file_or_new(&out) {
         return Err(SimError::Output {
             path: out,
@@ -544,16 +580,47 @@ fn cmd_run(
         human_duration(summary.wall),
         summary.wall.as_nanos() as f64 / summary.steps as f64
     );
-    say!(
-        "  energy       max |E − E₀|/|E₀| = {:.3e}",
-        summary.max_energy_error
-    );
+    match &summary.work {
+        // Unforced: the flow conserves E, and its drift is the method's error.
+        None => say!(
+            "  energy       max |E − E₀|/|E₀| = {:.3e}",
+            summary.max_energy_error
+        ),
+        // Forced: E changes by the forces' work; what the work does not account for is the error.
+        Some(w) => {
+            say!(
+                "  energy       change E(T) − E₀ = {:.6e} (the forces' work; not an error)",
+                summary.energy_change
+            );
+            say!(
+                "  work         W = ∫⟨F, ξ⟩dt = {:.6e} (trapezoid rule over the steps, O(h²))",
+                w.work
+            );
+            say!(
+                "  balance      max |E − E₀ − W|/max|E| = {:.3e} (the energy error: method and \
+                 quadrature)",
+                w.max_balance_error
+            );
+        }
+    }
     match summary.max_casimir_error {
         Some(c) => say!("  casimir      max |C − C₀|/|C₀| = {c:.3e}"),
         None => say!(
             "  casimir      (none monitored for this {})",
             scene.system.kind()
         ),
+    }
+    if !summary.turned.is_empty() {
+        let angles: Vec<String> = summary.turned.iter().map(|a| format!("{a:.4}")).collect();
+        say!(
+            "  attitude     turned {} rad from R₀ by the end (the angle of R₀ᵀR{})",
+            angles.join(", "),
+            if angles.len() > 1 {
+                ", body by body"
+            } else {
+                ""
+            }
+        );
     }
     for e in &summary.events {
         say!(
@@ -574,6 +641,54 @@ fn cmd_run(
     );
     if let Some(p) = plotted {
         say!("  plot         {}", p.display());
+    }
+    if let Some(args) = check {
+        report_error_at_t(&scene, &summary, args)?;
+    }
+    Ok(())
+}
+
+/// `run --reference` / `--check`: the run's error at T against the reference, in the trade's
+/// measure ([`measure::FinalState::error`]), unresolved below the reference's estimated error.
+fn report_error_at_t(
+    scene: &Scene,
+    summary: &run::RunSummary,
+    args: &ReferenceArgs,
+) -> Result<(), SimError> {
+    if let Some(t) = summary.stopped_at {
+        return Err(SimError::Usage {
+            flag: if args.reference.is_some() {
+                "--reference".into()
+            } else {
+                "--check".into()
+            },
+            message: format!(
+                "an event stopped the run at t = {t}: there is no state at T = {} to compare",
+                scene.duration
+            ),
+        });
+    }
+    let reference = reference::reference(scene, &args.options())?;
+    let error = summary.final_state.error(&reference.state);
+    say!(
+        "  reference    {}; estimated error {:.1e}",
+        reference.description,
+        reference.estimated_error
+    );
+    if let Some(line) = &reference.shortfall {
+        say!("  reference    {line}");
+    }
+    if error < reference.estimated_error {
+        say!(
+            "  error at T   unresolved (below the reference's estimated error {:.1e}; the \
+             trade's measure)",
+            reference.estimated_error
+        );
+    } else {
+        say!(
+            "  error at T   {error:.6e} (max(‖μ − μ_ref‖∞/‖μ_ref‖∞, ‖g − g_ref‖∞/max(1, \
+             ‖g_ref‖∞)), the trade's measure)"
+        );
     }
     Ok(())
 }
@@ -1076,6 +1191,7 @@ fn main() -> ExitCode {
             None,
             None,
             Some(default_path("default", ".svg")),
+            None,
             OverrideArgs {
                 duration: None,
                 duration_flag: None,
@@ -1088,8 +1204,13 @@ fn main() -> ExitCode {
             scene,
             out,
             plot,
+            check,
+            reference,
             overrides,
-        }) => cmd_run(scene.as_deref(), out, plot, overrides),
+        }) => {
+            let check = (check || reference.reference.is_some()).then_some(&reference);
+            cmd_run(scene.as_deref(), out, plot, check, overrides)
+        }
         Some(Command::Plot { csv, out }) => cmd_plot(&csv, out),
         Some(Command::Trade {
             scene,

@@ -1,6 +1,6 @@
-//! `lie-sim plot`: an SVG of a trajectory CSV written by `lie-sim run` — relative energy error,
-//! Casimir error and the momentum components against time — and the drawing of the work-precision
-//! plot for `lie-sim trade`.
+//! `lie-sim plot`: an SVG of a trajectory CSV written by `lie-sim run` — relative energy error
+//! (with forces, the energy balance E − E₀ − W), Casimir error, the momentum components and the
+//! attitude against time — and the drawing of the work-precision plot for `lie-sim trade`.
 
 use crate::error::SimError;
 use crate::output::AtomicFile;
@@ -198,15 +198,69 @@ fn panel<DB: DrawingBackend>(
 /// A panel: its caption and its named series.
 type Panel<'a> = (String, Vec<(&'a str, Vec<f64>)>);
 
-/// Draws the trajectory plot to `out` (atomically): relative energy error (E − E₀)/|E₀|, relative
-/// Casimir error (C − C₀)/|C₀| when the CSV has a `casimir` column, and μ₁ … μ_N, each against t.
+/// The energy balance `(E − E₀ − W)/max|E|` of a run with forces (its `work` column W; absolute
+/// when the energy stays 0): the part of the energy's change the forces' work does not explain.
+pub fn energy_balance(energy: &[f64], work: &[f64]) -> Vec<f64> {
+    let e0 = energy.first().copied().unwrap_or(0.0);
+    let scale = energy.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    let scale = if scale > 0.0 { scale } else { 1.0 };
+    energy
+        .iter()
+        .zip(work)
+        .map(|(e, w)| (e - e0 - w) / scale)
+        .collect()
+}
+
+/// The attitude panels' series: for each body (`qw` or `qw_k` …), its rotation angle
+/// θ = |φ| = |(rv1, rv2, rv3)| and, for a single body, its quaternion components.
+fn attitude_series(traj: &Trajectory) -> Vec<(String, Vec<f64>)> {
+    let suffixes: Vec<String> = traj
+        .header
+        .iter()
+        .filter_map(|h| h.strip_prefix("qw"))
+        .map(str::to_string)
+        .collect();
+    let mut series = Vec::new();
+    for sfx in &suffixes {
+        let rv: Vec<&[f64]> = (1..=3)
+            .filter_map(|i| traj.column(&format!("rv{i}{sfx}")))
+            .collect();
+        if rv.len() == 3 {
+            let angle = (0..traj.rows())
+                .map(|r| rv.iter().map(|c| c[r] * c[r]).sum::<f64>().sqrt())
+                .collect();
+            series.push((format!("θ{sfx} (rad)"), angle));
+        }
+    }
+    if suffixes == [""] {
+        for q in ["qw", "qx", "qy", "qz"] {
+            if let Some(c) = traj.column(q) {
+                series.push((q.to_string(), c.to_vec()));
+            }
+        }
+    }
+    series
+}
+
+/// Draws the trajectory plot to `out` (atomically), each panel against t: the relative energy
+/// error (E − E₀)/|E₀| — or, for a run with forces (a `work` column), the energy balance error
+/// (E − E₀ − W)/max|E| ([`energy_balance`]) —, the relative Casimir error (C − C₀)/|C₀| when the
+/// CSV has a `casimir` column, μ₁ … μ_N, and the attitude when the CSV has one
+/// ([`crate::attitude`]): the rotation angle θ = |φ| of each body and, for one body, its unit
+/// quaternion (qw ≥ 0).
 pub fn plot_trajectory(traj: &Trajectory, out: &Path, title: &str) -> Result<(), SimError> {
     let t = traj.column("t").unwrap_or(&[]);
     let energy = traj.column("energy").unwrap_or(&[]);
-    let mut panels: Vec<Panel> = vec![(
-        format!("{title}: relative energy error (E − E₀)/|E₀|"),
-        vec![("energy", relative_deviation(energy))],
-    )];
+    let mut panels: Vec<Panel> = vec![match traj.column("work") {
+        Some(w) => (
+            format!("{title}: energy balance error (E − E₀ − W)/max|E|, W the forces' work"),
+            vec![("E − E₀ − W", energy_balance(energy, w))],
+        ),
+        None => (
+            format!("{title}: relative energy error (E − E₀)/|E₀|"),
+            vec![("energy", relative_deviation(energy))],
+        ),
+    }];
     if let Some(c) = traj.column("casimir") {
         panels.push((
             "relative Casimir error (C − C₀)/|C₀|".into(),
@@ -219,6 +273,24 @@ pub fn plot_trajectory(traj: &Trajectory, out: &Path, title: &str) -> Result<(),
         .map(|(n, c)| (n, c.to_vec()))
         .collect();
     panels.push(("body momentum μ".into(), mu));
+    let attitude = attitude_series(traj);
+    if !attitude.is_empty() {
+        let quaternion = attitude.iter().any(|(n, _)| n == "qw");
+        panels.push((
+            format!(
+                "attitude: rotation angle θ = |φ|{}",
+                if quaternion {
+                    " and unit quaternion (qw ≥ 0)"
+                } else {
+                    " of each body"
+                }
+            ),
+            attitude
+                .iter()
+                .map(|(n, s)| (n.as_str(), s.clone()))
+                .collect(),
+        ));
+    }
 
     let file = AtomicFile::new(out)?;
     {

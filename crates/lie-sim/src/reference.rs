@@ -132,7 +132,14 @@ impl Reference {
             .group
             .as_ref()
             .map(|g| (g.len() as f64).sqrt().round() as usize);
-        let header = crate::run::columns(self.state.momentum.len(), side, self.casimir.is_some());
+        let header = crate::columns::Layout {
+            momentum: self.state.momentum.len(),
+            side,
+            casimir: self.casimir.is_some(),
+            forced: false,
+            bodies: 0,
+        }
+        .names();
         let mut row = vec![self.time];
         row.extend(&self.state.momentum);
         row.extend(self.state.group.iter().flatten());
@@ -696,8 +703,7 @@ pub fn from_csv(path: &Path, scene: &Scene, tolerance: f64) -> Result<Reference,
     let group = match side {
         None => None,
         Some(m) => {
-            let names = crate::run::columns(0, Some(m), false);
-            let g_names = &names[1..names.len() - 1];
+            let g_names = &crate::columns::group_names(Some(m));
             let found = traj
                 .header
                 .iter()

@@ -1,8 +1,17 @@
 //! `lie-sim run`: advance a scene and write its trajectory as CSV.
 //!
-//! Columns: `t`, `mu1 … muN` (body momentum μ), `g11, g12, …` (the group element's matrix,
-//! row-major; left out when the scene does not reconstruct g), `energy`, and `casimir` where the
-//! system has one.
+//! Columns ([`crate::columns`]): `t`, `mu1 … muN` (body momentum μ), `g11, g12, …` (the group
+//! element's matrix, row-major; left out when the scene does not reconstruct g), `energy`,
+//! `casimir` where the system has one, `power, work` where the scene has forces, and each body's
+//! attitude as a unit quaternion and a rotation vector ([`crate::attitude`]) where g is
+//! reconstructed.
+//!
+//! The summary's energy line: without forces the energy is conserved by the flow, and
+//! `max |E − E₀|/|E₀|` is the method's energy error. With forces the energy changes by their work:
+//! the summary then reports the **energy change** `E(T) − E₀` as such, the **work**
+//! `W = ∫₀ᵀ ⟨F_ext, ξ⟩ dt` (trapezoid rule over the steps), and the **energy balance error**
+//! `max_k |E_k − E₀ − W_k| / max_k |E_k|` — the part of the change the forces do not account for,
+//! which is the method's error plus the quadrature's O(h²).
 
 use crate::build::build_with;
 use crate::error::SimError;
@@ -35,6 +44,16 @@ pub struct RunSummary {
     pub max_energy_error: f64,
     /// max_k |C_k − C₀| / |C₀| for the Casimir, where the system has one.
     pub max_casimir_error: Option<f64>,
+    /// E(T) − E₀ (at the run's last state).
+    pub energy_change: f64,
+    /// With forces: their work W(T) and the energy balance error
+    /// `max_k |E_k − E₀ − W_k| / max_k |E_k|` (see the module page).
+    pub work: Option<Work>,
+    /// How far each body turned from its initial attitude by the run's end: the angle of R₀ᵀR
+    /// ([`crate::attitude::turned`]); empty without attitudes.
+    pub turned: Vec<f64>,
+    /// The state at the run's end, compared with a reference by `run --reference`.
+    pub final_state: crate::measure::FinalState,
     /// Where the CSV went.
     pub out: PathBuf,
     /// What the method is and keeps, as it describes itself.
@@ -43,6 +62,64 @@ pub struct RunSummary {
     pub events: Vec<EventRecord>,
     /// The time at which a `stop = true` event ended the run.
     pub stopped_at: Option<f64>,
+}
+
+/// The work of the forces over a run and the energy balance it leaves.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Work {
+    /// W(T) = ∫₀ᵀ ⟨F_ext, ξ⟩ dt, trapezoid rule over the steps.
+    pub work: f64,
+    /// max_k |E_k − E₀ − W_k| / max_k |E_k| (absolute when the energy stays 0).
+    pub max_balance_error: f64,
+}
+
+/// The work of the forces accumulated along a run by the trapezoid rule over its steps, and the
+/// energy balance it leaves (see the module page). Reads nothing but what it is given: no
+/// allocation per step.
+#[derive(Debug, Clone, Copy)]
+pub struct WorkMeter {
+    e0: f64,
+    /// (t, P, W) at the last step's end.
+    last: (f64, f64, f64),
+    max_balance: f64,
+    max_energy: f64,
+}
+
+impl WorkMeter {
+    /// A meter started at time t₀ with energy E₀ and power P₀.
+    pub fn new(t0: f64, e0: f64, p0: f64) -> Self {
+        Self {
+            e0,
+            last: (t0, p0, 0.0),
+            max_balance: 0.0,
+            max_energy: e0.abs(),
+        }
+    }
+    /// W(t) for a time t in the current step with power P(t) there: the last step's end's W plus
+    /// the trapezoid from it to t.
+    pub fn work_at(&self, t: f64, p: f64) -> f64 {
+        let (t0, p0, w0) = self.last;
+        w0 + 0.5 * (t - t0) * (p0 + p)
+    }
+    /// Closes a step ending at t with energy E and power P there; returns W(t).
+    pub fn step(&mut self, t: f64, e: f64, p: f64) -> f64 {
+        let w = self.work_at(t, p);
+        self.last = (t, p, w);
+        self.max_balance = self.max_balance.max((e - self.e0 - w).abs());
+        self.max_energy = self.max_energy.max(e.abs());
+        w
+    }
+    /// W and the balance error so far.
+    pub fn result(&self) -> Work {
+        Work {
+            work: self.last.2,
+            max_balance_error: if self.max_energy > 0.0 {
+                self.max_balance / self.max_energy
+            } else {
+                self.max_balance
+            },
+        }
+    }
 }
 
 /// One located crossing of a scene event.
@@ -61,38 +138,9 @@ pub struct EventRecord {
 /// Relative width (in units of max(1, T)) to which event times are located.
 pub const EVENT_TOLERANCE: f64 = 1e-12;
 
-/// The CSV header for a simulation's columns.
+/// The CSV header for a simulation's columns ([`crate::columns`]).
 pub fn header(sim: &dyn Simulation) -> Vec<String> {
-    columns(
-        sim.momentum_dim(),
-        sim.group_side(),
-        sim.casimir().is_some(),
-    )
-}
-
-/// The trajectory columns for a momentum of `n` components, a group matrix of side `side` (`None`
-/// without reconstruction) and an optional Casimir: `t, mu1 … muN, g11 … (g1_1 … for a side of 10
-/// or more), energy[, casimir]`.
-pub fn columns(n: usize, side: Option<usize>, casimir: bool) -> Vec<String> {
-    let mut h = vec!["t".to_string()];
-    h.extend((1..=n).map(|i| format!("mu{i}")));
-    if let Some(m) = side {
-        for i in 1..=m {
-            for j in 1..=m {
-                // Two-digit indices (SO(n), n ≥ 10) would be ambiguous without a separator.
-                h.push(if m >= 10 {
-                    format!("g{i}_{j}")
-                } else {
-                    format!("g{i}{j}")
-                });
-            }
-        }
-    }
-    h.push("energy".into());
-    if casimir {
-        h.push("casimir".into());
-    }
-    h
+    sim.layout().names()
 }
 
 /// A CSV cell: the shortest decimal that reads back to the same double (`{:?}`), in exponent form
@@ -116,13 +164,15 @@ fn write_cells(w: &mut impl Write, row: &[f64]) -> std::io::Result<()> {
     writeln!(w)
 }
 
-/// The row at time tc of step k: the step's end `row1` itself, or interpolated into `between`.
+/// The row at time tc of step k: the step's end `row1` itself, or interpolated into `between`
+/// (its `work` cell, at index `work.0`, the trapezoid from the step's start, `work.1`).
 fn row_at<'a>(
     sim: &dyn Simulation,
     row1: &'a [f64],
     between: &'a mut [f64],
     tc: f64,
     k: u64,
+    work: Option<(usize, &WorkMeter)>,
 ) -> Result<&'a [f64], SimError> {
     if tc == row1[0] {
         Ok(row1)
@@ -132,6 +182,9 @@ fn row_at<'a>(
             time: tc,
             message,
         })?;
+        if let Some((j, meter)) = work {
+            between[j] = meter.work_at(tc, between[j - 1]);
+        }
         Ok(between)
     }
 }
@@ -236,6 +289,15 @@ pub fn run_simulation(
     let mut next_time = 0usize;
     let times: &[f64] = scene.output_times.as_deref().unwrap_or(&[]);
     sim.read(&mut row0);
+    let work_column = sim.layout().work();
+    let mut attitudes0 = vec![0.0; sim.bodies() * crate::attitude::CELLS];
+    sim.read_attitudes(&mut attitudes0);
+    let mut meter = sim
+        .power()
+        .map(|p0| WorkMeter::new(sim.time(), sim.energy(), p0));
+    if let Some(j) = work_column {
+        row0[j] = 0.0;
+    }
     if scene.output_times.is_none() {
         write_cells(&mut w, &row0).map_err(werr)?;
         rows += 1;
@@ -309,6 +371,12 @@ pub fn run_simulation(
             return Err(SimError::NonFinite { step: k, time: t });
         }
         max_e = max_e.max(relative_error(e, e0));
+        // The meter before this step, for rows between its ends.
+        let before = meter;
+        let work_now = meter
+            .as_mut()
+            .zip(sim.power())
+            .map(|(m, p)| m.step(sim.time(), e, p));
         if let (Some(c0), Some(mc), Some(c)) = (c0, max_c.as_mut(), sim.casimir()) {
             *mc = mc.max(relative_error(c, c0));
         }
@@ -328,6 +396,10 @@ pub fn run_simulation(
             continue;
         }
         sim.read(&mut row1);
+        let work = work_column.zip(before.as_ref());
+        if let (Some(j), Some(w)) = (work_column, work_now) {
+            row1[j] = w;
+        }
         // events: sign changes of (column − value) over the step, located on the interpolant
         let mut step_records = Vec::new();
         for &(j, ev) in &events {
@@ -335,8 +407,15 @@ pub fn run_simulation(
             if let Some(rising) = ev.direction.crossing(v0, v1) {
                 let f = |tc: f64| {
                     let mut r = vec![0.0; width];
-                    sim.read_at(tc, &mut r)
-                        .map_or(f64::NAN, |()| r[j] - ev.value)
+                    match sim.read_at(tc, &mut r) {
+                        Ok(()) => {
+                            if let Some((jw, m)) = work {
+                                r[jw] = m.work_at(tc, r[jw - 1]);
+                            }
+                            r[j] - ev.value
+                        }
+                        Err(_) => f64::NAN,
+                    }
                 };
                 let tc = find_crossing(f, (row0[0], v0), (row1[0], v1), tolerance);
                 step_records.push((
@@ -361,7 +440,7 @@ pub fn run_simulation(
             while next_time < times.len() && times[next_time] <= t_end {
                 write_cells(
                     &mut w,
-                    row_at(sim, &row1, &mut between, times[next_time], k)?,
+                    row_at(sim, &row1, &mut between, times[next_time], k, work)?,
                 )
                 .map_err(werr)?;
                 rows += 1;
@@ -370,7 +449,8 @@ pub fn run_simulation(
         } else {
             since_row += 1;
             if stopped_at.is_some() {
-                write_cells(&mut w, row_at(sim, &row1, &mut between, t_end, k)?).map_err(werr)?;
+                write_cells(&mut w, row_at(sim, &row1, &mut between, t_end, k, work)?)
+                    .map_err(werr)?;
                 rows += 1;
             } else if since_row == scene.stride || last {
                 write_cells(&mut w, &row1).map_err(werr)?;
@@ -393,13 +473,19 @@ pub fn run_simulation(
         b.finish_and_clear();
     }
     file.commit_writer(w)?;
+    let mut attitudes = vec![0.0; attitudes0.len()];
+    sim.read_attitudes(&mut attitudes);
     Ok(RunSummary {
+        turned: crate::attitude::turned(&attitudes0, &attitudes),
         steps: taken,
         stats: sim.stats(),
         rows,
         wall: start.elapsed(),
         max_energy_error: max_e,
         max_casimir_error: max_c,
+        energy_change: sim.energy() - e0,
+        work: meter.map(|m| m.result()),
+        final_state: crate::measure::FinalState::of(sim),
         out: out.to_path_buf(),
         info: sim.info(),
         events: records,
@@ -462,7 +548,8 @@ mod tests {
         let mut lines = text.lines();
         assert_eq!(
             lines.next().unwrap(),
-            "t,mu1,mu2,mu3,g11,g12,g13,g21,g22,g23,g31,g32,g33,energy,casimir"
+            "t,mu1,mu2,mu3,g11,g12,g13,g21,g22,g23,g31,g32,g33,energy,casimir,\
+             qw,qx,qy,qz,rv1,rv2,rv3"
         );
         let last: Vec<f64> = text
             .lines()
@@ -471,9 +558,15 @@ mod tests {
             .split(',')
             .map(|x| x.parse().unwrap())
             .collect();
-        assert_eq!(last.len(), 15);
+        assert_eq!(last.len(), 22);
         // The last step lands on T to rounding of ten additions of 0.1.
         assert!((last[0] - 1.0).abs() < 1e-14);
+        // R = exp(t ω ê₃): q = (cos ωt/2, 0, 0, sin ωt/2), φ = (0, 0, ωt).
+        let t = last[0];
+        let want = [(t / 2.0).cos(), 0.0, 0.0, (t / 2.0).sin(), 0.0, 0.0, t];
+        for (got, want) in last[15..].iter().zip(want) {
+            assert!((got - want).abs() < 1e-15, "{:?}", &last[15..]);
+        }
         assert_eq!(text.lines().count(), 6);
     }
 
@@ -524,7 +617,7 @@ mod tests {
         assert_eq!(rows.len(), 3);
         assert_eq!(rows[2][0], 7.3, "the last row is at T exactly");
 
-        let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+        let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
         let pi0 = Vector3::new(0.3, 2.0, 0.1);
         let method = RkmkDop853::new(body, pi0, Some(So3::identity())).unwrap();
         let mut run = Adaptive::new(method, Tolerance::uniform(1e-9).unwrap());
@@ -541,6 +634,23 @@ mod tests {
             assert_eq!(row[0], *t);
             assert_eq!(&row[1..4], pi.as_slice(), "at t = {t}");
         }
+    }
+
+    /// The meter's work is the trapezoid rule: exact for a power linear in t over each step
+    /// (P = 2t: W = t², whatever the steps), and the balance error is what E − E₀ − W leaves,
+    /// relative to the largest |E|.
+    #[test]
+    fn the_work_meter_integrates_the_power_by_the_trapezoid_rule() {
+        let mut m = WorkMeter::new(0.0, 1.0, 0.0);
+        for t in [0.1, 0.35, 0.5, 1.0] {
+            // E = 1 + t² + 0.01 t: the forces' work plus a drift of 0.01 t.
+            let w = m.step(t, 1.0 + t * t + 0.01 * t, 2.0 * t);
+            assert!((w - t * t).abs() < 1e-15, "W({t}) = {w}");
+        }
+        assert!((m.work_at(1.5, 3.0) - 2.25).abs() < 1e-15);
+        let r = m.result();
+        assert!((r.work - 1.0).abs() < 1e-15);
+        assert!((r.max_balance_error - 0.01 / 2.01).abs() < 1e-15, "{r:?}");
     }
 
     /// A scene refused for its tolerance leaves no output file.

@@ -6,6 +6,8 @@
 //! spatial momentum map, a whole trajectory row — so that a run that reads the state after every
 //! step allocates nothing for it (groups whose matrix lives on the stack: SO(3), SE(2), SE(3)).
 
+use crate::attitude::{self, Attitudes};
+pub use crate::columns::Layout;
 use crate::driver::{Driver, ReversibleDriver};
 use faer::Mat;
 use integrators::adaptive::{Controller, EmbeddedPair, Stats, Tolerance};
@@ -74,13 +76,39 @@ pub trait Simulation {
         None
     }
 
-    /// The number of columns of a trajectory row (`crate::run::columns`).
-    fn columns(&self) -> usize {
-        let side = self.group_side().unwrap_or(0);
-        2 + self.momentum_dim() + side * side + usize::from(self.casimir().is_some())
+    /// The power `⟨F_ext(t, g, ξ), ξ⟩` of the external forces at the current state (ξ = ∂h/∂μ), or
+    /// `None` when the system is not forced.
+    fn power(&self) -> Option<f64> {
+        None
     }
-    /// The current state as a trajectory row written into `row` ([`Self::columns`] entries): t, μ,
-    /// g's entries (when reconstructed), energy, Casimir (when the system has one).
+    /// How many rigid-body attitudes the state holds (`crate::attitude`): 0 when g is not
+    /// reconstructed.
+    fn bodies(&self) -> usize {
+        0
+    }
+    /// Writes the attitudes' cells (`crate::attitude::write_all`) into `out`; `false` when there
+    /// are none.
+    fn read_attitudes(&self, _out: &mut [f64]) -> bool {
+        false
+    }
+
+    /// Which columns a trajectory row has.
+    fn layout(&self) -> Layout {
+        Layout {
+            momentum: self.momentum_dim(),
+            side: self.group_side(),
+            casimir: self.casimir().is_some(),
+            forced: self.power().is_some(),
+            bodies: self.bodies(),
+        }
+    }
+    /// The number of columns of a trajectory row ([`Layout::width`]).
+    fn columns(&self) -> usize {
+        self.layout().width()
+    }
+    /// The current state as a trajectory row written into `row` ([`Self::columns`] entries, in
+    /// the order of [`Layout::names`]). The `work` cell, an integral along the run, is the
+    /// runner's to fill: it is left as it was.
     fn read(&self, row: &mut [f64]) {
         row[0] = self.time();
         let n = self.momentum_dim();
@@ -91,9 +119,16 @@ pub trait Simulation {
             k += m * m;
         }
         row[k] = self.energy();
+        k += 1;
         if let Some(c) = self.casimir() {
-            row[k + 1] = c;
+            row[k] = c;
+            k += 1;
         }
+        if let Some(p) = self.power() {
+            row[k] = p;
+            k += 2;
+        }
+        self.read_attitudes(&mut row[k..]);
     }
     /// μ as a vector (allocates: for reads outside the stepping loop).
     fn momentum(&self) -> Vec<f64> {
@@ -160,10 +195,11 @@ impl Entries for Mat<f64> {
     }
 }
 
-/// The groups a simulation runs on: those whose matrix is [`Entries`].
-pub trait SimGroup: LieGroup<Matrix: Entries> {}
+/// The groups a simulation runs on: those whose matrix is [`Entries`] and whose attitudes are
+/// known ([`Attitudes`]).
+pub trait SimGroup: LieGroup<Matrix: Entries> + Attitudes {}
 
-impl<G: LieGroup<Matrix: Entries>> SimGroup for G {}
+impl<G: LieGroup<Matrix: Entries> + Attitudes> SimGroup for G {}
 
 /// Any integrator of the integrators crate on the group G, boxed: the type a scene's method (with
 /// its τ, θ, composition, processing) is erased to, so that one code path runs them all. A
@@ -502,7 +538,27 @@ pub(crate) fn read_spatial_momentum<I: Integrator<Group: SimGroup> + ?Sized>(
     }
 }
 
-/// The trajectory row of the state (μ, g) at t into `row`, energy and Casimir from `system`.
+/// The power `⟨F_ext(t, g, ξ), ξ⟩` of `system`'s external forces at (t, μ, g), ξ = ∂h/∂μ; `None`
+/// when it is not forced.
+pub(crate) fn power_of<G: LieGroup, S: integrators::System<G>>(
+    system: &S,
+    t: f64,
+    mu: &G::Algebra,
+    g: Option<&G>,
+) -> Option<f64> {
+    system.is_forced().then(|| {
+        let xi = system.velocity(mu);
+        system.external_force(t, g, &xi).dot(&xi)
+    })
+}
+
+/// How many attitudes g holds; none when g is not reconstructed.
+pub(crate) fn attitudes_of<G: SimGroup>(g: Option<&G>) -> usize {
+    g.map_or(0, |_| G::BODIES)
+}
+
+/// The trajectory row of the state (μ, g) at t into `row` (as [`Simulation::read`]: the `work`
+/// cell is left for the runner), energy, Casimir and power from `system`.
 pub(crate) fn write_row<G: SimGroup, S: integrators::System<G>>(
     system: &S,
     t: f64,
@@ -521,8 +577,17 @@ pub(crate) fn write_row<G: SimGroup, S: integrators::System<G>>(
         k += side * side;
     }
     row[k] = system.energy(mu, g);
+    k += 1;
     if let Some(c) = system.casimir(mu) {
-        row[k + 1] = c;
+        row[k] = c;
+        k += 1;
+    }
+    if let Some(p) = power_of(system, t, mu, g) {
+        row[k] = p;
+        k += 2;
+    }
+    if let Some(g) = g {
+        attitude::write_all(g, &mut row[k..]);
     }
 }
 
@@ -561,6 +626,19 @@ where
     }
     fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
         self.system.conserved_momentum_map()
+    }
+    fn power(&self) -> Option<f64> {
+        let i = &self.integrator;
+        power_of(&self.system, i.time(), &i.momentum(), i.configuration())
+    }
+    fn bodies(&self) -> usize {
+        attitudes_of(self.integrator.configuration())
+    }
+    fn read_attitudes(&self, out: &mut [f64]) -> bool {
+        self.integrator
+            .configuration()
+            .map(|g| attitude::write_all(g, out))
+            .is_some()
     }
     fn info(&self) -> MethodInfo {
         self.integrator.info()
@@ -649,6 +727,20 @@ pub(crate) mod mock {
         /// The free body's: all of J.
         fn conserved_momentum_map(&self) -> Vec<Vec<usize>> {
             vec![vec![0], vec![1], vec![2]]
+        }
+        fn bodies(&self) -> usize {
+            usize::from(self.reconstruct)
+        }
+        fn read_attitudes(&self, out: &mut [f64]) -> bool {
+            if self.reconstruct {
+                let r = lie_groups::So3::from_rotation_vector(&nalgebra::Vector3::new(
+                    0.0,
+                    0.0,
+                    self.omega * self.t,
+                ));
+                crate::attitude::write(&r, out);
+            }
+            self.reconstruct
         }
         /// The exact uniform rotation.
         fn info(&self) -> integrators::MethodInfo {

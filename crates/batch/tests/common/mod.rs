@@ -47,7 +47,7 @@ pub fn near_separatrix(body: &RigidBody, gap: f64, seed: u64, i: u64) -> Vector3
 pub fn bodies() -> Vec<RigidBody> {
     MOMENTS
         .iter()
-        .map(|m| RigidBody::principal(m[0], m[1], m[2]).unwrap())
+        .map(|m| RigidBody::principal([m[0], m[1], m[2]]).unwrap())
         .collect()
 }
 

@@ -46,7 +46,7 @@
 //! use lie_groups::{LieGroup, So3};
 //! use nalgebra::Vector3;
 //!
-//! let body = RigidBody::principal(2.0, 3.0, 4.0)?;
+//! let body = RigidBody::principal([2.0, 3.0, 4.0])?;
 //! let pi0 = Vector3::new(1.0, 0.5, -0.3);
 //! let method = RkmkDop853::new(body, pi0, Some(So3::identity()))?;
 //! let mut run = Adaptive::new(method, Tolerance::new(1e-10, 1e-10)?);

@@ -106,7 +106,7 @@ const fn dexp_inv_terms(order: u32) -> usize {
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(2.0, 3.0, 4.0)?;
+/// let body = RigidBody::principal([2.0, 3.0, 4.0])?;
 /// let method = RkmkDopri5::new(body, Vector3::new(1.0, 0.5, -0.3), Some(So3::identity()))?;
 /// let mut run = Adaptive::new(method, Tolerance::new(1e-8, 1e-8)?);
 /// run.advance_to(10.0)?;

@@ -45,7 +45,7 @@ pub type QuaternionDop853<S> = QuaternionPair<S, Dop853, 12>;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(2.0, 3.0, 4.0)?;
+/// let body = RigidBody::principal([2.0, 3.0, 4.0])?;
 /// let method = QuaternionDop853::new(body, Vector3::new(1.0, 0.5, -0.3), Some(So3::identity()))?;
 /// let mut run = Adaptive::new(method, Tolerance::new(1e-10, 1e-10)?);
 /// run.advance_to(10.0)?;

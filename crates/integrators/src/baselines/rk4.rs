@@ -36,7 +36,7 @@ use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 /// use lie_groups::{LieGroup, So3, Vector};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+/// let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 /// let mut rk4 = QuaternionRk4::new(body, Vector3::new(0.5, 1.0, 0.2), Some(So3::identity()))?;
 /// integrators::integrate(&mut rk4, 0.01, 100, |_| {})?;
 /// assert!((rk4.time() - 1.0).abs() < 1e-12);

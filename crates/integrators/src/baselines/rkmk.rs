@@ -54,7 +54,7 @@ use lie_groups::{LieGroup, Vector};
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+/// let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 /// let mut rkmk = Rkmk4::new(body, Vector3::new(0.5, 1.0, 0.2), Some(So3::identity()))?;
 /// integrators::integrate(&mut rkmk, 0.01, 100, |_| {})?;
 /// let r = rkmk.configuration().unwrap().as_matrix();

@@ -36,7 +36,7 @@
 //! use lie_groups::{ExpMap, LieGroup, So3};
 //! use nalgebra::{Matrix3, Vector3};
 //!
-//! let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+//! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! // a torque of 0.1 about the body's first axis, and viscous damping F = −0.05 ξ
 //! let force = (
 //!     BodyTorque::<So3>::constant(Vector3::new(0.1, 0.0, 0.0))?,

@@ -41,7 +41,7 @@ use std::sync::OnceLock;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+/// let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 /// let pi0 = Vector3::new(0.5, 1.0, 0.2);
 /// let strang = Splitting::new(body, pi0, Some(So3::identity()))?;
 /// // Effective order 6 from 11 Strang steps a step (Kahan–Li's order-6 composition takes 9, with a

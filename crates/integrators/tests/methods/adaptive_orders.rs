@@ -173,7 +173,7 @@ fn so3_orders<S: System<So3> + Clone>(
 
 #[test]
 fn pairs_fit_their_orders_on_the_free_body_against_the_exact_flow() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, -0.7);
     let (pi, r) = FreeBodyFlow::new(&body)
         .advance(T, &pi0, Some(&g0()))

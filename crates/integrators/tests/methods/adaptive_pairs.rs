@@ -154,7 +154,7 @@ fn quaternion_dopri5_estimate_tracks_its_embedded_error() {
 #[test]
 fn group_estimate_is_the_log_distance_between_the_two_solutions() {
     // A free body (no μ error from a potential): drop μ by comparing g alone.
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let m = RkmkDopri5::new(body, Vector3::new(0.5, 1.0, -0.7), Some(g0())).unwrap();
     let mut last = f64::INFINITY;
     for h in [0.2, 0.1, 0.05] {
@@ -226,7 +226,7 @@ fn runs_land_exactly_on_the_end_time() {
 /// is as accurate as the accepted steps around it (against the exact free-body flow).
 #[test]
 fn output_times_are_exact_and_do_not_change_the_steps() {
-    let body = RigidBody::principal(2.0, 3.0, 4.0).unwrap();
+    let body = RigidBody::principal([2.0, 3.0, 4.0]).unwrap();
     let pi0 = Vector3::new(1.0, 0.5, -0.3);
     let flow = FreeBodyFlow::new(&body);
     let tol = Tolerance::new(1e-10, 1e-10).unwrap();
@@ -280,7 +280,7 @@ fn output_times_are_exact_and_do_not_change_the_steps() {
 /// the symmetric top 𝕀 = diag(1, 1, 2), Π₀ = (1, 0, 1) has Π₁ = cos(t/2), zero at π, 3π, 5π.
 #[test]
 fn events_are_located_across_variable_steps_to_their_tolerance() {
-    let top = RigidBody::principal(1.0, 1.0, 2.0).unwrap();
+    let top = RigidBody::principal([1.0, 1.0, 2.0]).unwrap();
     let pi0 = Vector3::new(1.0, 0.0, 1.0);
     for tol in [1e-6, 1e-10] {
         let tolerance = Tolerance::new(tol, tol).unwrap();
@@ -312,7 +312,7 @@ fn events_are_located_across_variable_steps_to_their_tolerance() {
 /// A terminal event stops the run at its crossing, in the state of the partial step there.
 #[test]
 fn a_terminal_event_stops_the_run_at_the_crossing() {
-    let top = RigidBody::principal(1.0, 1.0, 2.0).unwrap();
+    let top = RigidBody::principal([1.0, 1.0, 2.0]).unwrap();
     let pi0 = Vector3::new(1.0, 0.0, 1.0);
     let tol = Tolerance::new(1e-10, 1e-10).unwrap();
     let mut run = Adaptive::new(QuaternionDopri5::new(top, pi0, Some(g0())).unwrap(), tol);
@@ -421,7 +421,7 @@ fn adaptive_runs_allocate_nothing() {
         let n = allocations(|| run.advance_to(std::hint::black_box(10.0)).unwrap());
         assert_eq!(n, 0, "{name}: {n} allocations");
     }
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     check(RkmkDopri5::new(top(), PI0, Some(g0())).unwrap());
     check(RkmkDop853::new(top(), PI0, Some(g0())).unwrap());
     check(QuaternionDopri5::new(top(), PI0, Some(g0())).unwrap());

@@ -124,7 +124,7 @@ fn assert_proportional(
 
 #[test]
 fn free_body_error_follows_the_tolerance() {
-    let body = RigidBody::principal(2.0, 3.0, 4.0).unwrap();
+    let body = RigidBody::principal([2.0, 3.0, 4.0]).unwrap();
     let pi0 = Vector3::new(1.0, 0.5, -0.3);
     // R₀: 60° about e₃, the trade scene's attitude.
     let r0 = So3::from(UnitQuaternion::from_axis_angle(

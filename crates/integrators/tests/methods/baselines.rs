@@ -46,7 +46,7 @@ fn assert_order_4(label: &str, (p, e): (f64, f64)) {
 #[test]
 fn rk4_and_rkmk4_are_order_4_against_axisymmetric_closed_form() {
     let (i, i3) = (1.0, 2.5);
-    let body = RigidBody::principal(i, i, i3).unwrap();
+    let body = RigidBody::principal([i, i, i3]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 1.3);
     let t = 4.0;
     let reference = axisymmetric_exact(i, i3, &r0(), &pi0, t);
@@ -135,7 +135,7 @@ fn orthogonality(r: &So3) -> f64 {
 
 #[test]
 fn rkmk4_and_rk4_keep_rotation_orthogonal_to_round_off_over_1e5_steps() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let mut rkmk = Rkmk4::new(body.clone(), pi0, Some(g0())).unwrap();
     let mut rk4 = QuaternionRk4::new(body, pi0, Some(g0())).unwrap();
@@ -176,7 +176,7 @@ fn energy_error_by_chunk<I: Integrator>(
 /// 1.0e-4, so at h = 0.1 RK4 only loses after T ≈ 7e5 (see docs/work-precision.md).
 #[test]
 fn rk4_energy_drifts_secularly_where_lie_poisson_stays_bounded() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let (h, steps) = (0.1, 200_000);
     let rk4 = energy_error_by_chunk(
@@ -206,7 +206,7 @@ fn rk4_energy_drifts_secularly_where_lie_poisson_stays_bounded() {
 
 #[test]
 fn reconstruction_is_optional_and_does_not_change_the_momentum() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let mut a = QuaternionRk4::new(body.clone(), pi0, Some(g0())).unwrap();
     let mut b = QuaternionRk4::new(body.clone(), pi0, None).unwrap();
@@ -226,7 +226,7 @@ fn reconstruction_is_optional_and_does_not_change_the_momentum() {
 
 #[test]
 fn bad_input_is_refused_and_a_failed_step_leaves_the_state_untouched() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let nan = Vector3::new(f64::NAN, 0.0, 0.0);
     assert!(matches!(
         QuaternionRk4::new(body.clone(), nan, None),
@@ -273,7 +273,7 @@ proptest! {
         w in prop::array::uniform3(-3.0f64..3.0),
         h in 0.001f64..0.05,
     ) {
-        let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+        let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
         let pi0 = Vector3::from(p);
         prop_assume!(pi0.norm() > 0.1);
         let r0 = So3::exp(&Vector3::from(w));

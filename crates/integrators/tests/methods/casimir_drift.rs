@@ -12,7 +12,7 @@ use mechanics::RigidBody;
 use nalgebra::Vector3;
 
 fn drift<T: Tau<So3>>(theta: f64, steps: usize) -> (f64, f64, f64) {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     let m0 = g0.as_matrix() * pi0;
@@ -56,7 +56,7 @@ fn casimir_stays_at_round_off_for_any_number_of_small_steps() {
 #[test]
 fn every_solver_kind_reaches_the_same_floor() {
     use integrators::{SolverConfig, SolverKind};
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     let m0 = g0.as_matrix() * pi0;
@@ -98,7 +98,7 @@ fn every_solver_kind_reaches_the_same_floor() {
 #[test]
 fn euler_poincare_deviations_are_the_methods_not_round_off() {
     use integrators::{EulerPoincare, SolverConfig, SolverKind};
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     let m0 = g0.as_matrix() * pi0;

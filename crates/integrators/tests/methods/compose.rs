@@ -184,7 +184,7 @@ fn assert_order(what: &str, scheme: &CompositionScheme, p: f64, hs: &[f64], errs
 
 fn check_orders_axisymmetric<T: Tau<So3>>() {
     let (i, i3) = (1.0, 2.0);
-    let body = RigidBody::principal(i, i, i3).unwrap();
+    let body = RigidBody::principal([i, i, i3]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
     // t = 4: the exp-based order-8 errors are below 1e-8 already at h = 1 over t = 2.
     let t = 4.0;
@@ -223,7 +223,7 @@ fn compositions_of_lie_poisson_cayley_reach_orders_4_6_8_on_the_axisymmetric_bod
 /// ~1e-17, round-off ~1e-14), errors kept in [1e-12, 1e-4].
 #[test]
 fn compositions_reach_orders_4_6_8_on_a_triaxial_body() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
     let t = 2.0;
     let reference = rk4_reference(body.inertia(), &r0(), &pi0, t, 40_000);
@@ -270,7 +270,7 @@ fn compositions_reach_orders_4_6_8_on_the_heavy_top() {
 /// sub-steps solved to the solver's tolerance).
 #[test]
 fn theta_half_base_and_its_compositions_are_symmetric_step_then_back_is_identity() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
     let h = 0.3;
     let back_and_forth = |mut integ: Box<dyn Integrator<Group = So3>>| {
@@ -323,7 +323,7 @@ fn theta_half_base_and_its_compositions_are_symmetric_step_then_back_is_identity
 /// refused.
 #[test]
 fn lie_poisson_without_a_potential_is_a_symmetric_base_at_every_theta() {
-    let body = RigidBody::principal(1.0, 1.0, 2.0).unwrap();
+    let body = RigidBody::principal([1.0, 1.0, 2.0]).unwrap();
     let pi0 = Vector3::new(0.3, 0.4, 1.0);
     let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     for theta in [0.0, 0.3, 1.0] {
@@ -360,7 +360,7 @@ fn lie_poisson_without_a_potential_is_a_symmetric_base_at_every_theta() {
 
 #[test]
 fn composition_refuses_non_symmetric_base_methods() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let top = HeavyTop::principal([1.0, 2.0, 3.0], 1.0, 1.0, Vector3::new(0.0, 0.1, 0.5)).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
     let g0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
@@ -390,7 +390,7 @@ fn composition_refuses_non_symmetric_base_methods() {
 /// second (h = 50) cannot. Steps of h = 1e-6 (sub-steps ≤ 1e-4) converge within the limit.
 #[test]
 fn failed_sub_step_leaves_the_state_exactly_as_it_was() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
     let solver = SolverConfig {
         max_iterations: 3,
@@ -414,7 +414,7 @@ fn failed_sub_step_leaves_the_state_exactly_as_it_was() {
 /// the time after each step is exactly t + h; the energy error is bounded by the order-8 error.
 #[test]
 fn composition_conserves_the_casimir_to_round_off_and_tracks_time_exactly() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
     let c0 = pi0.norm_squared();
     let mut psi =
@@ -437,7 +437,7 @@ fn composition_conserves_the_casimir_to_round_off_and_tracks_time_exactly() {
 /// be put in another composition.
 #[test]
 fn compositions_nest() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 0.9);
     let inner =
         Composition::new(lp::<Cayley>(&body, pi0), CompositionScheme::kahan_li_6()).unwrap();

@@ -61,7 +61,7 @@ fn a_body_input_map_sums_its_columns() {
 /// A control input through B = I is `BodyTorque`: the forced Lie–Poisson runs agree bit for bit.
 #[test]
 fn identity_input_map_is_the_body_torque() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, -0.3);
     let r0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     let input =
@@ -102,7 +102,7 @@ impl InputMap<So3> for SpatialTorque {
 /// RΠ = R₀Π₀ + T τ_s to round-off (≤ 1e-13), for every θ. Without g the run is refused.
 #[test]
 fn an_input_map_that_reads_g_moves_the_momentum_map_by_the_applied_impulse() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, -0.3);
     let r0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     let tau = vec![0.3, -0.2, 0.1];

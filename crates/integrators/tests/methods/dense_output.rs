@@ -13,7 +13,7 @@ use mechanics::RigidBody;
 use nalgebra::{Matrix3, Vector3};
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 const PI0: Vector3<f64> = Vector3::new(0.5, 1.0, 0.2);
 fn g0() -> So3 {
@@ -161,7 +161,7 @@ fn dense_output_is_within_twice_the_error_at_the_steps() {
 /// The symmetric top 𝕀 = diag(1, 1, 2), Π₀ = (1, 0, 1): Π₁ = cos(t/2), Π₂ = sin(t/2), so Π₁ falls
 /// through 0 at t = π and 5π and rises at 3π.
 fn top() -> RigidBody {
-    RigidBody::principal(1.0, 1.0, 2.0).unwrap()
+    RigidBody::principal([1.0, 1.0, 2.0]).unwrap()
 }
 
 #[test]

@@ -35,7 +35,7 @@ fn the_built_in_systems_pass() {
         (
             "rigid body",
             check_derivatives(
-                &RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+                &RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
                 &so3_samples(),
             ),
         ),
@@ -95,7 +95,7 @@ fn the_built_in_systems_pass() {
         .potential_differential
         .is_some());
     assert!(check_derivatives(
-        &RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+        &RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
         &so3_samples()
     )
     .potential_differential

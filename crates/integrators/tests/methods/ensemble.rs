@@ -12,7 +12,7 @@ use mechanics::RigidBody;
 use nalgebra::Vector3;
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 
 fn sweep(n: usize, steps: usize) -> Ensemble<Vector3<f64>> {

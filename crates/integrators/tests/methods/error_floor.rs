@@ -26,7 +26,7 @@ const PI0: Vector3<f64> = Vector3::new(0.4, 1.0, 0.3);
 const T_END: f64 = 10.0;
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 
 fn r0() -> So3 {
@@ -110,14 +110,14 @@ fn every_solver_kind_reaches_the_same_floor() {
 /// ulps per step; within the slow drift e|ξ|²t of the near spheres).
 #[test]
 fn a_vanishing_increment_is_certified_at_the_rounding_of_its_data() {
-    let near_sphere = |e: f64| RigidBody::principal(2.0, 2.0 * (1.0 + e), 2.0 * (1.0 + 2.0 * e));
+    let near_sphere = |e: f64| RigidBody::principal([2.0, 2.0 * (1.0 + e), 2.0 * (1.0 + 2.0 * e)]);
     let xi = Vector3::new(0.7, -1.3, 0.4);
     // (name, body, ξ₀, bound on the change of ξ over the run)
     let steady = 1000.0 * 4.0 * f64::EPSILON * 1.3;
     let cases = [
         (
             "sphere",
-            RigidBody::principal(2.0, 2.0, 2.0).unwrap(),
+            RigidBody::principal([2.0, 2.0, 2.0]).unwrap(),
             xi,
             steady,
         ),

@@ -29,7 +29,7 @@ fn euler_arnold_field_is_euler_equations_on_so3() {
 #[test]
 fn euler_arnold_field_is_the_derivative_along_the_exact_flow() {
     let moments = Vector3::new(1.0, 2.0, 3.0);
-    let body = RigidBody::principal(moments.x, moments.y, moments.z).unwrap();
+    let body = RigidBody::principal([moments.x, moments.y, moments.z]).unwrap();
     let ea = EulerArnold::<So3>::new(Matrix3::from_diagonal(&moments)).unwrap();
     let flow = FreeBodyFlow::new(&body);
     let pi0 = Vector3::new(0.4, 1.0, 0.3);

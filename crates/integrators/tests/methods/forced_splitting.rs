@@ -33,7 +33,7 @@ impl ExternalForce<So3> for SmoothTorque {
 }
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 
 fn damping() -> Matrix3<f64> {

@@ -14,7 +14,7 @@ use mechanics::systems::{HeavyTop, RigidBody};
 use nalgebra::{Matrix3, Vector3};
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 
 fn g0() -> So3 {

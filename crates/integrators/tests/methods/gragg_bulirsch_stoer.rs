@@ -68,7 +68,7 @@ fn forced_ladder(k: usize) -> &'static [usize] {
 #[test]
 fn order_2k_on_the_symmetric_top() {
     let (i, i3) = (2.0, 3.5);
-    let body = RigidBody::principal(i, i, i3).unwrap();
+    let body = RigidBody::principal([i, i, i3]).unwrap();
     let pi0 = Vector3::new(0.9, -0.6, 1.4);
     let r0 = r0();
     let t = 8.0;
@@ -142,7 +142,7 @@ fn order_2k_on_the_free_body_in_se3() {
 #[test]
 fn order_2k_with_a_time_dependent_torque_and_damping() {
     let i3 = 3.0;
-    let body = RigidBody::principal(1.0, 2.0, i3).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, i3]).unwrap();
     let t = 8.0;
     let (u0, u1, d3) = (0.5, 0.25, 0.6);
     let torque = Schedule::new(
@@ -206,7 +206,7 @@ fn the_heavy_top_matches_an_independent_rk4() {
 /// and k outside 1 ..= 10 are refused; the state after a refused step is the state before it.
 #[test]
 fn refusals_name_the_cause_and_keep_the_state() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     // Π off the principal axes, so that Θ and ξ do not commute (about an axis the series is exact
     // in one term at any |Θ|).
     let pi0 = Vector3::new(1.0, 2.0, 3.0);
@@ -248,7 +248,7 @@ fn refusals_name_the_cause_and_keep_the_state() {
 /// Π₃ + uT (relative 1e-15).
 #[test]
 fn many_small_increments_do_not_random_walk() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let u = 1e-3 * 2f64.sqrt();
     let sys = Forced::new(
         body,

@@ -9,7 +9,7 @@ use mechanics::RigidBody;
 use nalgebra::{Matrix3, Vector3};
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 const PI0: Vector3<f64> = Vector3::new(0.8, 0.5, 0.6);
 

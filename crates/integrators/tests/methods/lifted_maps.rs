@@ -93,7 +93,7 @@ fn check_euler_poincare<T: Tau<So3>, S: System<So3> + Clone>(system: S, theta: f
 
 #[test]
 fn lie_poisson_steps_satisfy_the_cotangent_lift_equation_free_body() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     for theta in THETAS {
         check_lie_poisson::<ExpMap, _>(body.clone(), theta);
         check_lie_poisson::<Cayley, _>(body.clone(), theta);
@@ -110,7 +110,7 @@ fn lie_poisson_steps_satisfy_the_cotangent_lift_equation_with_potential() {
 
 #[test]
 fn euler_poincare_steps_satisfy_the_tangent_lift_equation_free_body() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     for theta in THETAS {
         check_euler_poincare::<ExpMap, _>(body.clone(), theta);
         check_euler_poincare::<Cayley, _>(body.clone(), theta);

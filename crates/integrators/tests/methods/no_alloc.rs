@@ -84,7 +84,7 @@ where
 
 #[test]
 fn so3_steps_allocate_nothing() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.5, 1.0, 0.2);
     let r0 = So3::exp(&Vector3::new(0.3, -0.5, 0.8));
     every_method::<So3, _>(&body, pi0, Some(r0), 0.01);
@@ -254,7 +254,7 @@ fn product_and_power_splittings_allocate_nothing() {
 /// The counter does see allocations: building a method name allocates a `String`.
 #[test]
 fn the_allocation_counter_counts() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let lp =
         LiePoisson::<So3, Cayley, _>::new(body, 0.5, Vector3::new(0.5, 1.0, 0.2), None).unwrap();
     assert!(allocations(|| drop(std::hint::black_box(lp.method_name()))) > 0);

@@ -113,7 +113,7 @@ fn check_all(
 #[test]
 fn orders_match_axisymmetric_closed_form() {
     let (i, i3) = (1.0, 2.5);
-    let body = RigidBody::principal(i, i, i3).unwrap();
+    let body = RigidBody::principal([i, i, i3]).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 1.3);
     let t = 2.0;
     let reference = axisymmetric_exact(i, i3, &r0(), &pi0, t);

@@ -258,7 +258,7 @@ fn assert_effective_order_within(
 
 fn triaxial() -> (RigidBody, Vector3<f64>, So3) {
     (
-        RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+        RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
         Vector3::new(0.6, -0.4, 0.9),
         So3::from_matrix(&r0()).unwrap(),
     )
@@ -280,7 +280,7 @@ const FLOOR: f64 = 1e-12;
 /// summed over thousands of stages, stalls its errors at ~5e-12, which bends the fit.
 #[test]
 fn effective_orders_on_the_free_rigid_body() {
-    let body = RigidBody::principal(2.0, 3.0, 4.0).unwrap();
+    let body = RigidBody::principal([2.0, 3.0, 4.0]).unwrap();
     let pi0 = Vector3::new(1.0, 0.5, -0.3);
     let g0 = So3::from_matrix(&r0()).unwrap();
     let t = 10.0;

@@ -43,7 +43,7 @@ fn free_composed() -> Composition<Splitting<So3, RigidBody>> {
 }
 
 fn free() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 
 #[test]

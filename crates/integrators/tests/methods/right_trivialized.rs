@@ -15,7 +15,7 @@ type RightLp<T> = CotangentLiftIntegrator<So3, RightDiscretizationMap<T>, RigidB
 type RightEp<T> = TangentLiftIntegrator<So3, RightDiscretizationMap<T>, RigidBody>;
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 const MU0: Vector3<f64> = Vector3::new(0.5, 1.0, 0.2);
 fn r0() -> So3 {

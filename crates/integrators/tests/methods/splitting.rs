@@ -107,7 +107,7 @@ fn pieces_sum_to_the_velocity_and_are_constant_along_their_flows() {
     let g3 = So3::exp(&Vector3::new(0.3, -0.2, 0.9));
     let pi = Vector3::new(0.4, -1.1, 0.7);
     check(
-        &RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+        &RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
         pi,
         g3,
         "free body",
@@ -181,7 +181,7 @@ fn strang_and_its_compositions_have_their_orders_on_the_free_body() {
             rk4_reference(&full, &r0(), &pi0, t, 20_000),
         ),
         (
-            RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+            RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
             rk4_reference(
                 &Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 3.0)),
                 &r0(),
@@ -191,7 +191,7 @@ fn strang_and_its_compositions_have_their_orders_on_the_free_body() {
             ),
         ),
         (
-            RigidBody::principal(1.0, 1.0, 2.5).unwrap(),
+            RigidBody::principal([1.0, 1.0, 2.5]).unwrap(),
             axisymmetric_exact(1.0, 2.5, &r0(), &pi0, t),
         ),
     ];
@@ -316,7 +316,7 @@ fn exact_kinetic_flow_kicks_have_their_orders_on_an_asymmetric_heavy_top() {
 /// lands on the closed form).
 #[test]
 fn kinetic_kick_without_potential_is_the_exact_flow() {
-    let body = RigidBody::principal(1.0, 1.0, 2.5).unwrap();
+    let body = RigidBody::principal([1.0, 1.0, 2.5]).unwrap();
     let flow = AxisymmetricFlow::new(&body).unwrap();
     let pi0 = Vector3::new(0.6, -0.4, 1.3);
     let g0 = So3::from_matrix(&r0()).unwrap();
@@ -328,7 +328,7 @@ fn kinetic_kick_without_potential_is_the_exact_flow() {
         (k.momentum() - p).amax() < 1e-14
             && (k.configuration().unwrap().as_matrix() - r).amax() < 1e-14
     );
-    assert!(AxisymmetricFlow::new(&RigidBody::principal(1.0, 2.0, 3.0).unwrap()).is_err());
+    assert!(AxisymmetricFlow::new(&RigidBody::principal([1.0, 2.0, 3.0]).unwrap()).is_err());
 }
 
 /// Casimir |Π|² and the spatial momentum RΠ at round-off over 10⁶ Strang steps of the free body:
@@ -339,7 +339,7 @@ fn kinetic_kick_without_potential_is_the_exact_flow() {
 /// a step; a biased rounding, 1 ulp per rotation, would reach 1e-9), R on SO(3).
 #[test]
 fn strang_keeps_casimir_and_momentum_map_over_a_million_steps() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let g0 = So3::from_matrix(&r0()).unwrap();
     let m0 = r0() * pi0;
@@ -369,7 +369,7 @@ fn strang_keeps_casimir_and_momentum_map_over_a_million_steps() {
 /// the heavy top (Strang), and over 10⁶ steps for the exact-flow kicks on an asymmetric top.
 #[test]
 fn splitting_energy_does_not_drift() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let g0 = So3::from_matrix(&r0()).unwrap();
     let s = Splitting::new(body, Vector3::new(0.4, 1.0, 0.3), Some(g0)).unwrap();
     let (first, last) = energy_error_tenths(s, 0.05, 10_000_000);
@@ -429,7 +429,7 @@ fn splittings_are_reversible() {
 /// at the same step drifts by more or diverges.
 #[test]
 fn fast_spin_keeps_invariants_where_rk4_fails() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(60.0, 50.0, -40.0);
     let omega = body.angular_velocity(&pi0).norm();
     let g0 = So3::from_matrix(&r0()).unwrap();
@@ -538,7 +538,7 @@ fn the_axisymmetric_split_beats_the_principal_axes() {
         ([1.0, 2.0, 1e3], [1.0, 1.0, 1.0], 1.2),
     ];
     for (m, pi, gain) in bodies {
-        let body = RigidBody::principal(m[0], m[1], m[2]).unwrap();
+        let body = RigidBody::principal([m[0], m[1], m[2]]).unwrap();
         let pi0 = Vector3::new(pi[0], pi[1], pi[2]);
         let (pe, ge) = FreeBodyFlow::new(&body)
             .advance(5.0, &pi0, Some(&g0))
@@ -627,7 +627,7 @@ fn merged_outer_flows_equal_the_unmerged_sequence() {
         assert_eq!(merged.configuration(), fresh.configuration(), "{name}");
     }
     check(
-        RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+        RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
         2000,
         "free body",
     );
@@ -724,7 +724,7 @@ fn extreme_bodies_and_momenta_keep_the_casimir() {
     let g0 = So3::from_matrix(&r0()).unwrap();
     let dir = Vector3::new(0.6, -0.3, 0.74);
     for moments in [[1.0, 1e3, 1e6], [1e6, 1.0, 1e3], [1.0, 1.0 + 1e-12, 1e6]] {
-        let body = RigidBody::principal(moments[0], moments[1], moments[2]).unwrap();
+        let body = RigidBody::principal([moments[0], moments[1], moments[2]]).unwrap();
         for scale in [1e-150, 1.0, 1e150] {
             let pi0 = dir * scale;
             let omega = body.angular_velocity(&pi0).norm();

@@ -20,7 +20,7 @@ use nalgebra::Vector3;
 const PI0: Vector3<f64> = Vector3::new(0.3, -0.2, 0.5);
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 
 fn top() -> HeavyTop {

@@ -12,7 +12,7 @@ use mechanics::RigidBody;
 use nalgebra::{Matrix3, Vector3};
 
 fn body() -> RigidBody {
-    RigidBody::principal(1.0, 2.0, 3.0).unwrap()
+    RigidBody::principal([1.0, 2.0, 3.0]).unwrap()
 }
 
 fn g0() -> Option<So3> {

@@ -34,7 +34,9 @@ impl Csv {
     }
 }
 
-fn expected_header(n_mu: usize, side: Option<usize>, casimir: bool) -> Vec<String> {
+/// The trajectory columns: μ, g, energy, the Casimir, then the attitude (quaternion and rotation
+/// vector) of `bodies` bodies (0 or 1 here).
+fn expected_header(n_mu: usize, side: Option<usize>, casimir: bool, bodies: usize) -> Vec<String> {
     let mut h = vec!["t".to_string()];
     h.extend((1..=n_mu).map(|i| format!("mu{i}")));
     if let Some(m) = side {
@@ -47,6 +49,9 @@ fn expected_header(n_mu: usize, side: Option<usize>, casimir: bool) -> Vec<Strin
     h.push("energy".into());
     if casimir {
         h.push("casimir".into());
+    }
+    for _ in 0..bodies {
+        h.extend(["qw", "qx", "qy", "qz", "rv1", "rv2", "rv3"].map(String::from));
     }
     h
 }
@@ -82,7 +87,8 @@ fn check_scene(
     let (csv, summary) = run_example(file, "1");
     assert_eq!(
         csv.header,
-        expected_header(n_mu, Some(side), casimir),
+        // SO(3), SE(3) and SE(2) hold a body's attitude; SO(4) does not.
+        expected_header(n_mu, Some(side), casimir, usize::from(rot <= 3)),
         "{file}"
     );
     let steps = (1.0 / step).round() as usize;
@@ -174,7 +180,7 @@ fn reconstruct_false_leaves_out_the_group_columns() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(
         Csv::read(&dir.join("t.csv")).header,
-        expected_header(3, None, true)
+        expected_header(3, None, true, 0)
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -727,7 +733,7 @@ fn euler_arnold_runs_on_the_free_rigid_body_like_euler_poincare() {
     let (a, summary) = run_text("ea-frb", &ea);
     let (b, _) = run_text("ep-frb", &ep);
     assert!(summary.contains("euler-arnold"), "{summary}");
-    assert_eq!(a.header, expected_header(3, Some(3), true));
+    assert_eq!(a.header, expected_header(3, Some(3), true, 1));
     assert_eq!(a.rows.len(), 4);
     let last = a.rows.len() - 1;
     for (x, y) in a.rows[last].iter().zip(&b.rows[last]) {
@@ -749,7 +755,7 @@ fn composition_scene_runs_and_writes_a_valid_csv() {
     let comp = GOOD.replace("[integrator]", "[integrator]\ncomposition = \"kahan-li-6\"");
     let (c, summary) = run_text("compose", &comp);
     assert!(summary.contains("kahan-li-6"), "{summary}");
-    assert_eq!(c.header, expected_header(3, Some(3), true));
+    assert_eq!(c.header, expected_header(3, Some(3), true, 1));
     assert_eq!(c.rows.len(), 4);
     let t = c.col("t");
     assert_eq!(t[t.len() - 1], 0.3);

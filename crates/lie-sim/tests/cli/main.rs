@@ -12,5 +12,6 @@ mod imports;
 mod outputs;
 mod reference;
 mod reversible_steps;
+mod results;
 mod trade;
 mod vehicles;

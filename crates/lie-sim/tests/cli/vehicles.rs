@@ -18,7 +18,9 @@ fn text_col(path: &Path, name: &str) -> Vec<String> {
         .collect()
 }
 
-fn header(n_mu: usize, side: usize, casimir: bool) -> Vec<String> {
+/// The trajectory columns: μ, g (side × side), energy, the Casimir, `power, work` with forces,
+/// and the attitudes of `bodies` bodies (quaternion and rotation vector, `_k` for several).
+fn header(n_mu: usize, side: usize, casimir: bool, forced: bool, bodies: usize) -> Vec<String> {
     let mut h = vec!["t".to_string()];
     h.extend((1..=n_mu).map(|i| format!("mu{i}")));
     for i in 1..=side {
@@ -33,6 +35,18 @@ fn header(n_mu: usize, side: usize, casimir: bool) -> Vec<String> {
     h.push("energy".into());
     if casimir {
         h.push("casimir".into());
+    }
+    if forced {
+        h.extend(["power".into(), "work".into()]);
+    }
+    for k in 1..=bodies {
+        for n in ["qw", "qx", "qy", "qz", "rv1", "rv2", "rv3"] {
+            h.push(if bodies == 1 {
+                n.to_string()
+            } else {
+                format!("{n}_{k}")
+            });
+        }
     }
     h
 }
@@ -58,7 +72,7 @@ fn orthogonality(csv: &Csv, side: usize, r0: usize) -> f64 {
 #[test]
 fn reaction_wheel_scene_keeps_the_casimir_while_the_wheel_spins_up() {
     let (csv, summary) = run_example("reaction-wheel-slew.toml", "25");
-    assert_eq!(csv.header, header(6, 7, true));
+    assert_eq!(csv.header, header(6, 7, true, true, 1));
     assert!(summary.contains("wheel torques"), "{summary}");
     let c = csv.col("casimir");
     let drift = c.iter().map(|x| (x / c[0] - 1.0).abs()).fold(0.0, f64::max);
@@ -85,7 +99,7 @@ fn reaction_wheel_scene_keeps_the_casimir_while_the_wheel_spins_up() {
 #[test]
 fn underwater_vehicle_scene_porpoises_under_the_munk_moment() {
     let (csv, summary) = run_example("underwater-vehicle.toml", "10");
-    assert_eq!(csv.header, header(6, 4, false));
+    assert_eq!(csv.header, header(6, 4, false, true, 1));
     assert!(summary.contains("quadratic drag"), "{summary}");
     let nose = csv.col("g31");
     let dip = nose.iter().fold(0.0f64, |m, x| m.max(-x));
@@ -100,7 +114,7 @@ fn underwater_vehicle_scene_porpoises_under_the_munk_moment() {
 #[test]
 fn quadrotor_scene_hovers_then_climbs() {
     let (csv, summary) = run_example("quadrotor.toml", "5");
-    assert_eq!(csv.header, header(6, 4, false));
+    assert_eq!(csv.header, header(6, 4, false, true, 1));
     assert!(
         summary.contains("thrust") && summary.contains("order 4"),
         "{summary}"
@@ -118,7 +132,7 @@ fn quadrotor_scene_hovers_then_climbs() {
 #[test]
 fn pendulum_3d_scene_is_the_heavy_top() {
     let (csv, summary) = run_example("pendulum-3d.toml", "5");
-    assert_eq!(csv.header, header(3, 3, false));
+    assert_eq!(csv.header, header(3, 3, false, false, 1));
     assert!(summary.contains("heavy-top"), "{summary}");
     let e = csv.col("energy");
     let drift = e.iter().map(|x| (x / e[0] - 1.0).abs()).fold(0.0, f64::max);
@@ -131,7 +145,7 @@ fn pendulum_3d_scene_is_the_heavy_top() {
 #[test]
 fn coupled_bodies_scene_keeps_the_energy() {
     let (csv, _) = run_example("coupled-bodies.toml", "2");
-    assert_eq!(csv.header, header(18, 12, false));
+    assert_eq!(csv.header, header(18, 12, false, false, 3));
     let e = csv.col("energy");
     let drift = e.iter().map(|x| (x / e[0] - 1.0).abs()).fold(0.0, f64::max);
     assert!(drift < 1e-4, "energy drift {drift:e}");

@@ -28,7 +28,7 @@ use nalgebra::Vector3;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+/// let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 /// let mut exact = ExactFreeBody::new(body, Vector3::new(0.4, 1.0, 0.3), Some(So3::identity()))?;
 /// let e0 = exact.energy();
 /// exact.step(1000.0)?; // one step to T = 1000

@@ -84,7 +84,7 @@ const PHASE_LIMIT: f64 = 4_503_599_627_370_496.0;
 /// use lie_groups::{LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
-/// let flow = FreeBodyFlow::new(&RigidBody::principal(1.0, 2.0, 3.0)?);
+/// let flow = FreeBodyFlow::new(&RigidBody::principal([1.0, 2.0, 3.0])?);
 /// let pi0 = Vector3::new(0.4, 1.0, 0.3);
 /// let (pi, r) = flow.advance(1e4, &pi0, Some(&So3::identity()))?;
 /// let r = r.unwrap();

@@ -30,7 +30,7 @@ use nalgebra::Vector3;
 /// use lie_groups::{Cayley, LieGroup, So3};
 /// use nalgebra::Vector3;
 ///
-/// let body = RigidBody::principal(1.0, 2.0, 3.0)?;
+/// let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 /// let pi0 = Vector3::new(0.5, 1.0, 0.2);
 /// // Order 6 from the cheaper θ = 0 step.
 /// let scheme = ModifiedScheme::new(0.0, 6)?;

@@ -35,9 +35,11 @@ pub struct RigidBody {
 }
 
 impl RigidBody {
-    /// A body with principal moments of inertia `(i1, i2, i3)` (all positive and finite).
-    pub fn principal(i1: f64, i2: f64, i3: f64) -> Result<Self, IntegratorError> {
-        Self::new(Matrix3::from_diagonal(&Vector3::new(i1, i2, i3)))
+    /// A body with principal moments of inertia `[I₁, I₂, I₃]` (all positive and finite), given
+    /// as an array like every system's list of moments (`HeavyTop::principal`, a scene's
+    /// `inertia = [I₁, I₂, I₃]`).
+    pub fn principal(moments: [f64; 3]) -> Result<Self, IntegratorError> {
+        Self::new(Matrix3::from_diagonal(&Vector3::from(moments)))
     }
     /// A body with a full inertia tensor (symmetric positive definite).
     pub fn new(inertia: Matrix3<f64>) -> Result<Self, IntegratorError> {

@@ -116,7 +116,7 @@ fn exact_flow_matches_a_forty_digit_integration_in_every_regime() {
 /// sides of the separatrix.
 #[test]
 fn exact_flow_is_a_one_parameter_group() {
-    let flow = FreeBodyFlow::new(&RigidBody::principal(1.0, 2.0, 3.0).unwrap());
+    let flow = FreeBodyFlow::new(&RigidBody::principal([1.0, 2.0, 3.0]).unwrap());
     let g0 = So3::from_matrix(&r0()).unwrap();
     for pi0 in [Vector3::new(0.4, 1.0, 0.3), Vector3::new(1.0, 0.3, -0.2)] {
         for (t1, t2) in [(0.3, 0.45), (17.0, -4.0), (123.4, 56.7)] {
@@ -141,7 +141,7 @@ fn exact_flow_is_a_one_parameter_group() {
 /// round-off (the phase itself is only as accurate as ε·t).
 #[test]
 fn exact_flow_keeps_the_invariants_at_huge_times() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let flow = FreeBodyFlow::new(&body);
     use integrators::System;
     let g0 = So3::from_matrix(&r0()).unwrap();
@@ -161,7 +161,7 @@ fn exact_flow_keeps_the_invariants_at_huge_times() {
 /// Π = 0 is rest.
 #[test]
 fn exact_flow_scales_to_tiny_and_huge_momenta() {
-    let flow = FreeBodyFlow::new(&RigidBody::principal(1.0, 2.0, 3.0).unwrap());
+    let flow = FreeBodyFlow::new(&RigidBody::principal([1.0, 2.0, 3.0]).unwrap());
     let g0 = So3::from_matrix(&r0()).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let (p, r) = flow.advance(3.0, &pi0, Some(&g0)).unwrap();
@@ -188,7 +188,7 @@ fn exact_flow_matches_rk4_and_the_axisymmetric_closed_form() {
         .unwrap();
     let (rr, pr) = rk4_reference(&full, &r0(), &pi0, 3.0, 150_000);
     assert!((p - pr).amax() < 1e-13 && (r.unwrap().as_matrix() - rr).amax() < 1e-13);
-    let (p, r) = FreeBodyFlow::new(&RigidBody::principal(1.0, 1.0, 2.5).unwrap())
+    let (p, r) = FreeBodyFlow::new(&RigidBody::principal([1.0, 1.0, 2.5]).unwrap())
         .advance(7.0, &pi0, Some(&g0))
         .unwrap();
     let (rr, pr) = axisymmetric_exact(1.0, 2.5, &r0(), &pi0, 7.0);
@@ -202,7 +202,7 @@ fn exact_flow_matches_rk4_and_the_axisymmetric_closed_form() {
 /// to 2.6e-13); bad input refused with the state untouched.
 #[test]
 fn exact_integrator_is_what_it_declares() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let g0 = So3::from_matrix(&r0()).unwrap();
     let info = ExactFreeBody::new(body.clone(), pi0, Some(g0))
@@ -377,7 +377,7 @@ fn separatrix_states_match_mpmath() {
     let cases = separatrix_cases();
     assert!(cases.len() >= 30);
     for c in cases {
-        let body = RigidBody::principal(c.inertia.x, c.inertia.y, c.inertia.z).unwrap();
+        let body = RigidBody::principal([c.inertia.x, c.inertia.y, c.inertia.z]).unwrap();
         let flow = FreeBodyFlow::new(&body);
         let (pi, r) = flow.advance(c.t, &c.pi0, Some(&r0)).unwrap();
         let r = r.unwrap();
@@ -466,7 +466,7 @@ fn separatrix_family_errs_within_the_spread_of_its_inputs() {
     let mut count = 0;
     for c in family_cases().iter().filter(|c| c.kind == "family") {
         let flow = FreeBodyFlow::new(
-            &RigidBody::principal(c.inertia.x, c.inertia.y, c.inertia.z).unwrap(),
+            &RigidBody::principal([c.inertia.x, c.inertia.y, c.inertia.z]).unwrap(),
         );
         let m = c.pi0.norm();
         for (k, (t, want, spread)) in c.at.iter().enumerate() {
@@ -499,7 +499,7 @@ fn separatrix_family_runs_to_a_million() {
     let r0 = separatrix_r0();
     let mut worst = 0.0f64;
     for c in family_cases().iter().filter(|c| c.kind == "family") {
-        let body = RigidBody::principal(c.inertia.x, c.inertia.y, c.inertia.z).unwrap();
+        let body = RigidBody::principal([c.inertia.x, c.inertia.y, c.inertia.z]).unwrap();
         let flow = FreeBodyFlow::new(&body);
         use integrators::System;
         for t in [1e4, 1e5, 1e6, -1e6] {
@@ -528,7 +528,7 @@ fn separatrix_family_runs_to_a_million() {
 fn generic_states_have_componentwise_accuracy() {
     let (mut well, mut all, mut ratio) = (0.0f64, 0.0f64, 0.0f64);
     for c in family_cases().iter().filter(|c| c.kind == "generic") {
-        let body = RigidBody::principal(c.inertia.x, c.inertia.y, c.inertia.z).unwrap();
+        let body = RigidBody::principal([c.inertia.x, c.inertia.y, c.inertia.z]).unwrap();
         let flow = FreeBodyFlow::new(&body);
         for (t, want, spread) in &c.at {
             let (pi, _) = flow.advance(*t, &c.pi0, None).unwrap();
@@ -563,7 +563,7 @@ fn generic_states_have_componentwise_accuracy() {
 #[test]
 fn stepped_exact_flow_keeps_its_invariants() {
     use integrators::System;
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let g0 = So3::from_matrix(&r0()).unwrap();
     for (pi0, h) in [
         (Vector3::new(0.4, 1.0, 0.3), 0.01),
@@ -613,7 +613,7 @@ fn stepped_exact_flow_keeps_its_invariants() {
 #[test]
 fn restarted_flow_walks_without_bias() {
     use integrators::System;
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let flow = FreeBodyFlow::new(&body);
     for pi0 in [Vector3::new(1.0, 0.3, -0.2), Vector3::new(0.5, 1.0, 0.2)] {
         let (c0, e0) = (pi0.norm_squared(), body.hamiltonian(&pi0));
@@ -633,7 +633,7 @@ fn restarted_flow_walks_without_bias() {
 /// t = 0 is the identity, bitwise: `advance(0)` and `step(0)` (also after steps).
 #[test]
 fn zero_time_leaves_the_state_as_it_is() {
-    let body = RigidBody::principal(1.0, 2.0, 3.0).unwrap();
+    let body = RigidBody::principal([1.0, 2.0, 3.0]).unwrap();
     let g0 = So3::from_matrix(&r0()).unwrap();
     let pi0 = Vector3::new(0.4, 1.0, 0.3);
     let (p, r) = FreeBodyFlow::new(&body)

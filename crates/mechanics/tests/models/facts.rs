@@ -281,7 +281,7 @@ fn rates_are_the_frequencies_of_the_motion() {
 
     // Spin about e₁ of a principal body with damping D = diag(d): Π₁ = Π₁(0) e^{−(d₁/I₁) t}; the
     // declared rate is the largest dᵢ/Iᵢ (here axis 1's), or the body's |Ω| when larger.
-    let body = RigidBody::principal(2.0, 3.0, 4.0).unwrap();
+    let body = RigidBody::principal([2.0, 3.0, 4.0]).unwrap();
     let damping =
         LinearDamping::<So3>::new(Matrix3::from_diagonal(&Vector3::new(1.0, 0.3, 0.4))).unwrap();
     let damped = Forced::new(body.clone(), damping);
@@ -320,9 +320,9 @@ fn rates_are_the_frequencies_of_the_motion() {
 fn rigid_body_step_density_rate_is_the_closed_form() {
     use integrators::derivative_check::finite_difference_step_density_rate;
     let bodies = [
-        RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
-        RigidBody::principal(1.0, 1.0001, 1.5).unwrap(),
-        RigidBody::principal(1e-3, 1.0, 1.0005).unwrap(),
+        RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
+        RigidBody::principal([1.0, 1.0001, 1.5]).unwrap(),
+        RigidBody::principal([1e-3, 1.0, 1.0005]).unwrap(),
     ];
     let states = [
         Vector3::new(0.3, -1.2, 0.8),

@@ -13,7 +13,7 @@ use nalgebra::{Matrix3, Vector3};
 fn bodies() -> Vec<RigidBody> {
     let full = Matrix3::new(2.0, 0.3, -0.2, 0.3, 1.5, 0.1, -0.2, 0.1, 3.0);
     vec![
-        RigidBody::principal(1.0, 2.0, 3.0).unwrap(),
+        RigidBody::principal([1.0, 2.0, 3.0]).unwrap(),
         RigidBody::new(full).unwrap(),
     ]
 }

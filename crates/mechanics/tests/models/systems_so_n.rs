@@ -17,7 +17,7 @@ fn so3_coordinates_map_the_free_rigid_body_exactly() {
     // SoN<3>'s (Π_z, −Π_y, Π_x) with identical rotation matrices. The two Lie–Poisson runs do the
     // same arithmetic in a different basis: agreement to 1e-12 after 200 steps.
     let moments = [1.0, 2.0, 2.5];
-    let body = RigidBody::principal(moments[0], moments[1], moments[2]).unwrap();
+    let body = RigidBody::principal([moments[0], moments[1], moments[2]]).unwrap();
     let gen = GeneralizedRigidBody::<3>::from_principal_moments(moments).unwrap();
     let pi0 = Vector3::new(0.8, 0.5, 0.6);
     let to_son = |p: &Vector3<f64>| Col::from_fn(3, |i| [p.z, -p.y, p.x][i]);
