@@ -1,8 +1,8 @@
 //! A run whose steps are chosen as it goes ([`crate::driver::Driver`]: to a tolerance, or with
 //! reversible steps), with its system, seen as a [`Simulation`].
 
-use crate::driver::Driver;
 use crate::attitude;
+use crate::driver::Driver;
 use crate::sim::{attitudes_of, power_of};
 use crate::sim::{group_side, read_group, read_spatial_momentum, write_row, write_vector};
 use crate::sim::{SimGroup, Simulation};

@@ -44,9 +44,9 @@ mod batched;
 mod bounds;
 mod build;
 mod choose;
+mod columns;
 mod driven;
 mod driver;
-mod columns;
 mod error;
 #[cfg(test)]
 mod extremes;

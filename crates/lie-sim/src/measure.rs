@@ -146,6 +146,46 @@ fn timed(sim: &mut dyn Simulation, duration: f64, h: Option<f64>) -> Result<Time
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::build::build_with;
+    use crate::scene::{Overrides, Scene};
+    use crate::stepping::VariableSteps;
+    use integrators::adaptive::Tolerance;
+
+    /// The runs `trade` and `choose` time end exactly at T, whatever the steps: fixed steps with
+    /// T/h an integer (1.0 / 0.1, 50 / 0.01: `t += h` would end at 0.9999999999999999 and
+    /// 49.99999999999862) and not (0.7 / 0.3, the last step shortened), a tolerance-driven pair,
+    /// and reversible steps. On the heavy top, so that g matters.
+    #[test]
+    fn timed_runs_end_exactly_at_t() {
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../examples/scenes/heavy-top.toml"
+        ))
+        .unwrap();
+        let scene = Scene::parse(&text, "top", "top", Overrides::default()).unwrap();
+        let splitting = crate::methods::MethodSpec::plain(crate::methods::MethodId::Splitting);
+        let rkmk = crate::methods::MethodSpec::plain(crate::methods::MethodId::RkmkDop853);
+        for (duration, h) in [(1.0, 0.1), (50.0, 0.01), (0.7, 0.3)] {
+            let mut sim = build_with(&scene.system, &splitting, true, &scene.solver, None).unwrap();
+            let t = timed_run(sim.as_mut(), duration, h).unwrap();
+            assert_eq!(sim.time(), duration, "h = {h}");
+            assert_eq!(t.steps, steps_for(duration, h));
+        }
+        let variable = [
+            (
+                &rkmk,
+                VariableSteps::Tolerance(Tolerance::uniform(1e-8).unwrap()),
+            ),
+            (&splitting, VariableSteps::Reversible(0.05)),
+        ];
+        for (m, v) in variable {
+            for duration in [1.0, 7.3] {
+                let mut sim = build_with(&scene.system, m, true, &scene.solver, Some(v)).unwrap();
+                timed_adaptive_run(sim.as_mut(), duration).unwrap();
+                assert_eq!(sim.time(), duration, "{m} {v:?}");
+            }
+        }
+    }
 
     #[test]
     fn error_is_relative_in_momentum_and_absolute_below_one_in_the_group() {

@@ -20,24 +20,6 @@ step = 0.01
 duration = 20.0
 "#;
 
-/// Runs `scene` and returns (exit ok, stdout, stderr, CSV rows as numbers, files left).
-fn run(name: &str, scene: &str) -> (bool, String, String, Vec<Vec<f64>>, usize) {
-    let dir = temp_dir(name);
-    std::fs::write(dir.join("s.toml"), scene).unwrap();
-    let o = lie_sim(&["run", "s.toml", "--out", "t.csv"], &dir);
-    let rows = std::fs::read_to_string(dir.join("t.csv"))
-        .map(|text| {
-            text.lines()
-                .skip(1)
-                .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-                .collect()
-        })
-        .unwrap_or_default();
-    let files = std::fs::read_dir(&dir).unwrap().count();
-    std::fs::remove_dir_all(&dir).unwrap();
-    (o.status.success(), stdout(&o), stderr(&o), rows, files)
-}
-
 /// Rows at exactly the requested times (t = 0 included when asked), between steps, within the
 /// method's error of the closed form (its O(h²) phase error is 1.5e-5 t at h = 0.01: ≤ 3e-4
 /// over T = 20), and the group columns on SO(3).
@@ -45,7 +27,7 @@ fn run(name: &str, scene: &str) -> (bool, String, String, Vec<Vec<f64>>, usize) 
 fn output_times_give_rows_at_exactly_those_times() {
     let times = [0.0, 0.005, 1.0, 3.5, 12.3456, 20.0];
     let scene = format!("{TOP}\n[output]\ntimes = {times:?}\n");
-    let (ok, out, err, rows, _) = run("times", &scene);
+    let (ok, out, err, rows, _) = run_text("times", &scene);
     assert!(ok, "{err}");
     assert!(out.contains("(6 rows)"), "{out}");
     assert_eq!(rows.len(), times.len());
@@ -78,7 +60,7 @@ fn events_are_reported_and_stop_the_run() {
         "{TOP}\n[[events]]\nquantity = \"mu1\"\n\n[[events]]\nquantity = \"mu2\"\nvalue = -0.5\ndirection = \"falling\"\nstop = {}\n",
         "false"
     );
-    let (ok, out, err, _, _) = run("events", &scene);
+    let (ok, out, err, _, _) = run_text("events", &scene);
     assert!(ok, "{err}");
     let times: Vec<f64> = out
         .lines()
@@ -98,7 +80,7 @@ fn events_are_reported_and_stop_the_run() {
     );
 
     let stop = scene.replace("stop = false", "stop = true");
-    let (ok, out, err, rows, _) = run("stop", &stop);
+    let (ok, out, err, rows, _) = run_text("stop", &stop);
     assert!(ok, "{err}");
     assert!(out.contains("stopped"), "{out}");
     let last = rows.last().unwrap();
@@ -163,7 +145,7 @@ fn malformed_output_times_and_events_are_errors_naming_the_field() {
         ),
     ];
     for (name, scene, needles) in cases {
-        let (ok, _, err, _, files) = run(name, &scene);
+        let (ok, _, err, _, files) = run_text(name, &scene);
         assert!(!ok, "{name}: accepted");
         assert_eq!(err.lines().count(), 1, "{name}: {err}");
         for n in needles {

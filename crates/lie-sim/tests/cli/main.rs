@@ -11,7 +11,7 @@ mod edges;
 mod imports;
 mod outputs;
 mod reference;
-mod reversible_steps;
 mod results;
+mod reversible_steps;
 mod trade;
 mod vehicles;

@@ -23,24 +23,6 @@ duration = 20.0
     )
 }
 
-/// Runs `scene` in a fresh directory: (exit ok, stdout, stderr, CSV rows, files left).
-fn run(name: &str, scene: &str) -> (bool, String, String, Vec<Vec<f64>>, usize) {
-    let dir = temp_dir(name);
-    std::fs::write(dir.join("s.toml"), scene).unwrap();
-    let o = lie_sim(&["run", "s.toml", "--out", "t.csv"], &dir);
-    let rows = std::fs::read_to_string(dir.join("t.csv"))
-        .map(|text| {
-            text.lines()
-                .skip(1)
-                .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-                .collect()
-        })
-        .unwrap_or_default();
-    let files = std::fs::read_dir(&dir).unwrap().count();
-    std::fs::remove_dir_all(&dir).unwrap();
-    (o.status.success(), stdout(&o), stderr(&o), rows, files)
-}
-
 /// The summary's `h in [a, b]`.
 fn step_range(out: &str) -> (f64, f64) {
     let range = out
@@ -64,7 +46,7 @@ fn a_scene_with_epsilon_runs_reversible_steps_to_t_exactly() {
         "{}\n[output]\ntimes = {times:?}\n",
         top("splitting", "epsilon = 0.01")
     );
-    let (ok, out, err, rows, _) = run("times", &scene);
+    let (ok, out, err, rows, _) = run_text("times", &scene);
     assert!(ok, "{err}");
     assert!(out.contains("epsilon      1e-2"), "{out}");
     assert!(out.contains("reversible steps"), "{out}");
@@ -99,7 +81,7 @@ fn on_the_eccentric_orbit_the_steps_follow_the_motion() {
     let scene = text
         .replace("step = 0.002", "epsilon = 0.05")
         .replace("stride = 10", "stride = 1000000");
-    let (ok, out, err, rows, _) = run("orbit", &scene);
+    let (ok, out, err, rows, _) = run_text("orbit", &scene);
     assert!(ok, "{err}");
     let (lo, hi) = step_range(&out);
     assert!(hi / lo > 1.4, "h in [{lo}, {hi}]: {out}");
@@ -147,7 +129,7 @@ fn epsilon_is_refused_where_the_steps_could_not_be_reversible() {
         ),
     ];
     for (name, scene, why) in cases {
-        let (ok, _, err, _, files) = run(name, &scene);
+        let (ok, _, err, _, files) = run_text(name, &scene);
         assert!(!ok, "{name}: accepted");
         assert!(
             err.contains("integrator.epsilon") || err.contains("integrator.step"),

@@ -134,3 +134,22 @@ pub fn run_example(file: &str, duration: &str) -> (Csv, String) {
     std::fs::remove_dir_all(&dir).unwrap();
     (csv, stdout(&o))
 }
+
+/// What `lie-sim run` of a scene's text did: (exit ok, stdout, stderr, the trajectory CSV's rows
+/// as numbers, the files left in its fresh directory — 1, the scene, when it failed cleanly).
+pub fn run_text(name: &str, scene: &str) -> (bool, String, String, Vec<Vec<f64>>, usize) {
+    let dir = temp_dir(name);
+    std::fs::write(dir.join("s.toml"), scene).unwrap();
+    let o = lie_sim(&["run", "s.toml", "--out", "t.csv"], &dir);
+    let rows = std::fs::read_to_string(dir.join("t.csv"))
+        .map(|text| {
+            text.lines()
+                .skip(1)
+                .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+                .collect()
+        })
+        .unwrap_or_default();
+    let files = std::fs::read_dir(&dir).unwrap().count();
+    std::fs::remove_dir_all(&dir).unwrap();
+    (o.status.success(), stdout(&o), stderr(&o), rows, files)
+}
