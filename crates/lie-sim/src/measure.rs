@@ -78,7 +78,7 @@ pub fn timed_run(sim: &mut dyn Simulation, duration: f64, h: f64) -> Result<Time
     timed(sim, duration, Some(h))
 }
 
-/// Runs a tolerance-driven `sim` ([`crate::sim::PairSim`]) to `duration` with the steps its
+/// Runs a `sim` with variable steps ([`crate::driven::DrivenSim`]) to `duration` with the steps its
 /// controller accepts, the last landing on T, sampling as [`timed_run`] does.
 pub fn timed_adaptive_run(sim: &mut dyn Simulation, duration: f64) -> Result<Timed, SimError> {
     timed(sim, duration, None)
