@@ -1147,6 +1147,42 @@ pub fn all() -> Vec<Generator> {
             }),
         },
         Generator {
+            name: "bench-run-loop",
+            about: "`lie-sim run`'s loop against the same steps as `trade` times them",
+            takes: "1 min",
+            how: How::Bench(Bench {
+                bench: "run_loop",
+                filter: None,
+                measurement_time: 4,
+                tables: &[(
+                    At {
+                        file: BENCH,
+                        part: "run-loop",
+                    },
+                    Table::Ratios(&[
+                        Ratio {
+                            what: "Lie–Poisson Cayley θ = ½ with R",
+                            id: "run_loop/lie_poisson_cayley_half/run",
+                            against: "run_loop/lie_poisson_cayley_half/steps",
+                            bound: Some(1.2),
+                        },
+                        Ratio {
+                            what: "RK4 on (q, Π)",
+                            id: "run_loop/rk4/run",
+                            against: "run_loop/rk4/steps",
+                            bound: Some(1.2),
+                        },
+                        Ratio {
+                            what: "the Strang splitting with R",
+                            id: "run_loop/splitting/run",
+                            against: "run_loop/splitting/steps",
+                            bound: Some(1.2),
+                        },
+                    ]),
+                )],
+            }),
+        },
+        Generator {
             name: "callgrind-step-cost",
             about: "instructions per step of the trade's methods (valgrind)",
             takes: "5 min",

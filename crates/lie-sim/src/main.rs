@@ -15,7 +15,8 @@
 //! lie-sim methods [--markdown]              the method registry: options, systems, descriptors
 //! ```
 //!
-//! The scene format is documented in [`scene`]; examples live in `examples/scenes/`.
+//! The scene format is documented in the library's `scene` module (`cargo doc -p lie-sim`);
+//! examples live in `examples/scenes/`.
 
 /// `println!` to stdout that ignores a closed pipe (`lie-sim run … | head`) instead of panicking.
 /// `--quiet`: no summary on stdout and no progress bar (errors still go to stderr).
@@ -39,43 +40,13 @@ fn show_progress() -> bool {
     !quiet() && std::io::stderr().is_terminal()
 }
 
-mod attitude;
-mod batched;
-mod bounds;
-mod build;
-mod choose;
-mod columns;
-mod driven;
-mod driver;
-mod error;
-#[cfg(test)]
-mod extremes;
-mod fields;
-mod forces;
-#[cfg(test)]
-mod harness;
-mod input;
-mod invariants;
-mod ladder;
-mod listing;
-mod measure;
-mod methods;
-mod model;
-mod output;
-mod plot;
-mod reference;
-mod run;
-mod scene;
-mod sim;
-mod stepping;
-mod sweep;
-mod systems;
-mod taus;
-mod trade;
-
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use error::SimError;
 use integrators::ensemble::Shard;
+use lie_sim::error::SimError;
+use lie_sim::{
+    choose, input, ladder, listing, methods, output, plot, reference, run, scene, stepping, sweep,
+    trade,
+};
 use scene::{Overrides, Scene};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -649,7 +620,7 @@ fn cmd_run(
 }
 
 /// `run --reference` / `--check`: the run's error at T against the reference, in the trade's
-/// measure ([`measure::FinalState::error`]), unresolved below the reference's estimated error.
+/// measure ([`lie_sim::measure::FinalState::error`]), unresolved below the reference's estimated error.
 fn report_error_at_t(
     scene: &Scene,
     summary: &run::RunSummary,

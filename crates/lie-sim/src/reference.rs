@@ -252,7 +252,7 @@ fn exact_free_body(
 /// enter every run as the same doubles, and a relative rounding ε of a rate ω shifts the phase by
 /// ε ωT over T. Added to the spread of the runs: [`DATA_ROUNDING_ULPS`] · ε · (1 + ωT), with ω the
 /// scene's time scale.
-fn data_rounding(omega: f64, duration: f64) -> f64 {
+pub fn data_rounding(omega: f64, duration: f64) -> f64 {
     DATA_ROUNDING_ULPS * f64::EPSILON * (1.0 + omega * duration)
 }
 

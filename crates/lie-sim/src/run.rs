@@ -338,8 +338,10 @@ pub fn run_simulation(
 
     let mut taken = 0;
     let mut k = 0u64;
+    // The time at the start of the step: the last step's end (a failed step leaves the state,
+    // and its time, as it was).
+    let mut t = sim.time();
     loop {
-        let t = sim.time();
         if dense {
             sim.mark();
         }
@@ -353,9 +355,10 @@ pub fn run_simulation(
             time: t,
             message,
         })?;
+        let t_now = sim.time();
         taken += 1;
         let last = if adaptive {
-            sim.time() == scene.duration
+            t_now == scene.duration
         } else {
             k + 1 == n
         };
@@ -373,26 +376,29 @@ pub fn run_simulation(
         max_e = max_e.max(relative_error(e, e0));
         // The meter before this step, for rows between its ends.
         let before = meter;
+        // The power only where there are forces to meter.
         let work_now = meter
             .as_mut()
-            .zip(sim.power())
-            .map(|(m, p)| m.step(sim.time(), e, p));
-        if let (Some(c0), Some(mc), Some(c)) = (c0, max_c.as_mut(), sim.casimir()) {
-            *mc = mc.max(relative_error(c, c0));
+            .and_then(|m| sim.power().map(|p| m.step(t_now, e, p)));
+        if let (Some(c0), Some(mc)) = (c0, max_c.as_mut()) {
+            if let Some(c) = sim.casimir() {
+                *mc = mc.max(relative_error(c, c0));
+            }
         }
         let stride_row = scene.output_times.is_none() && (since_row + 1 == scene.stride || last);
-        let time_row = next_time < times.len() && times[next_time] <= sim.time();
+        let time_row = next_time < times.len() && times[next_time] <= t_now;
         if events.is_empty() && !stride_row && !time_row {
             since_row += 1;
             if let Some(b) = &bar {
                 if k.is_multiple_of(tick) {
-                    b.set_position(position(k, sim.time()));
+                    b.set_position(position(k, t_now));
                 }
             }
             if last {
                 break;
             }
             k += 1;
+            t = t_now;
             continue;
         }
         sim.read(&mut row1);
@@ -460,7 +466,7 @@ pub fn run_simulation(
         }
         if let Some(b) = &bar {
             if k.is_multiple_of(tick) {
-                b.set_position(position(k, sim.time()));
+                b.set_position(position(k, t_now));
             }
         }
         std::mem::swap(&mut row0, &mut row1);
@@ -468,6 +474,7 @@ pub fn run_simulation(
             break;
         }
         k += 1;
+        t = t_now;
     }
     if let Some(b) = bar {
         b.finish_and_clear();

@@ -166,40 +166,77 @@ impl<const R: usize, const C: usize> Entries for SMatrix<f64, R, C> {
     }
 }
 
-/// The composite groups' (products, powers) matrices.
-impl Entries for DMatrix<f64> {
-    fn side(&self) -> usize {
-        self.nrows()
-    }
-    fn write_row_major(&self, out: &mut [f64]) {
-        let c = self.ncols();
-        for i in 0..self.nrows() {
-            for j in 0..c {
-                out[i * c + j] = self[(i, j)];
+/// The matrices whose size is known at run time: nalgebra's (the composite groups: products,
+/// powers) and faer's (SO(n), GL(n)), which spell `nrows`, `ncols` and `m[(i, j)]` alike.
+macro_rules! dynamic_entries {
+    ($($matrix:ty),*) => {$(
+        impl Entries for $matrix {
+            fn side(&self) -> usize {
+                self.nrows()
+            }
+            fn write_row_major(&self, out: &mut [f64]) {
+                let c = self.ncols();
+                for i in 0..self.nrows() {
+                    for j in 0..c {
+                        out[i * c + j] = self[(i, j)];
+                    }
+                }
             }
         }
-    }
+    )*};
 }
 
-impl Entries for Mat<f64> {
-    fn side(&self) -> usize {
-        self.nrows()
-    }
-    fn write_row_major(&self, out: &mut [f64]) {
-        let c = self.ncols();
-        for i in 0..self.nrows() {
-            for j in 0..c {
-                out[i * c + j] = self[(i, j)];
-            }
-        }
-    }
-}
+dynamic_entries!(DMatrix<f64>, Mat<f64>);
 
 /// The groups a simulation runs on: those whose matrix is [`Entries`] and whose attitudes are
 /// known ([`Attitudes`]).
 pub trait SimGroup: LieGroup<Matrix: Entries> + Attitudes {}
 
 impl<G: LieGroup<Matrix: Entries> + Attitudes> SimGroup for G {}
+
+/// The [`Integrator`] methods of a wrapper, each forwarded to the integrator that `$inner`
+/// (`$inner_mut` for the step) reaches: the erasures below are their integrator, not a variant
+/// of it, so every method is forwarded, the provided ones (`side`, `read_error`) included.
+macro_rules! forward_integrator {
+    ($self:ident => $inner:expr, $inner_mut:expr) => {
+        fn step(&mut $self, h: f64) -> Result<(), IntegratorError> {
+            $inner_mut.step(h)
+        }
+        fn time(&$self) -> f64 {
+            $inner.time()
+        }
+        fn momentum(&$self) -> <Self::Group as LieGroup>::Algebra {
+            $inner.momentum()
+        }
+        fn velocity(&$self) -> <Self::Group as LieGroup>::Algebra {
+            $inner.velocity()
+        }
+        fn momentum_rate(&$self) -> <Self::Group as LieGroup>::Algebra {
+            $inner.momentum_rate()
+        }
+        fn configuration(&$self) -> Option<&Self::Group> {
+            $inner.configuration()
+        }
+        fn energy(&$self) -> f64 {
+            $inner.energy()
+        }
+        fn casimir(&$self) -> Option<f64> {
+            $inner.casimir()
+        }
+        fn method_name(&$self) -> String {
+            $inner.method_name()
+        }
+        fn info(&$self) -> MethodInfo {
+            $inner.info()
+        }
+        fn side(&$self) -> discretization::Side {
+            $inner.side()
+        }
+        fn read_error(&$self) -> Option<IntegratorError> {
+            $inner.read_error()
+        }
+    };
+}
 
 /// Any integrator of the integrators crate on the group G, boxed: the type a scene's method (with
 /// its τ, θ, composition, processing) is erased to, so that one code path runs them all. A
@@ -216,11 +253,10 @@ enum Erased<G: LieGroup> {
 }
 
 /// A symmetric method with the system whose step density ρ steers its reversible variable
-/// steps, type-erased: both concrete types are known only where the method is built.
-trait DynSymmetric {
-    type Group: LieGroup;
-    fn method(&self) -> &dyn Integrator<Group = Self::Group>;
-    fn method_mut(&mut self) -> &mut dyn Integrator<Group = Self::Group>;
+/// steps, type-erased: both concrete types are known only where the method is built. It is the
+/// method itself as an [`Integrator`] (the steps and reads of a fixed-step run go straight to
+/// it, one dynamic call each), and it can become a reversible driver.
+trait DynSymmetric: Integrator {
     fn reversible(
         self: Box<Self>,
         epsilon: f64,
@@ -233,18 +269,19 @@ struct Symmetric<M, S> {
     monitor: S,
 }
 
+impl<M, S> Integrator for Symmetric<M, S>
+where
+    M: Integrator,
+{
+    type Group = M::Group;
+    forward_integrator!(self => self.method, self.method);
+}
+
 impl<M, S> DynSymmetric for Symmetric<M, S>
 where
     M: SymmetricMethod + StateSnapshot + Clone + 'static,
     S: integrators::System<M::Group> + 'static,
 {
-    type Group = M::Group;
-    fn method(&self) -> &dyn Integrator<Group = M::Group> {
-        &self.method
-    }
-    fn method_mut(&mut self) -> &mut dyn Integrator<Group = M::Group> {
-        &mut self.method
-    }
     fn reversible(
         self: Box<Self>,
         epsilon: f64,
@@ -301,53 +338,21 @@ impl<G: LieGroup> Boxed<G> {
         match &self.0 {
             Erased::Fixed(b) => &**b,
             Erased::Pair(p) => &*p.0,
-            Erased::Symmetric(s) => s.method(),
+            Erased::Symmetric(s) => &**s,
         }
     }
     fn inner_mut(&mut self) -> &mut dyn Integrator<Group = G> {
         match &mut self.0 {
             Erased::Fixed(b) => &mut **b,
             Erased::Pair(p) => &mut *p.0,
-            Erased::Symmetric(s) => s.method_mut(),
+            Erased::Symmetric(s) => &mut **s,
         }
     }
 }
 
 impl<G: LieGroup> Integrator for Boxed<G> {
     type Group = G;
-    fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
-        self.inner_mut().step(h)
-    }
-    fn time(&self) -> f64 {
-        self.inner().time()
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.inner().momentum()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.inner().velocity()
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        self.inner().momentum_rate()
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.inner().configuration()
-    }
-    fn energy(&self) -> f64 {
-        self.inner().energy()
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.inner().casimir()
-    }
-    fn method_name(&self) -> String {
-        self.inner().method_name()
-    }
-    fn info(&self) -> MethodInfo {
-        self.inner().info()
-    }
-    fn read_error(&self) -> Option<IntegratorError> {
-        self.inner().read_error()
-    }
+    forward_integrator!(self => self.inner(), self.inner_mut());
 }
 
 /// An [`EmbeddedPair`] with its type erased (object safe: no `Clone` bound), so that a scene's
@@ -423,39 +428,7 @@ impl<G: LieGroup> Clone for Pair<G> {
 
 impl<G: LieGroup> Integrator for Pair<G> {
     type Group = G;
-    fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
-        self.0.step(h)
-    }
-    fn time(&self) -> f64 {
-        self.0.time()
-    }
-    fn momentum(&self) -> G::Algebra {
-        self.0.momentum()
-    }
-    fn velocity(&self) -> G::Algebra {
-        self.0.velocity()
-    }
-    fn momentum_rate(&self) -> G::Algebra {
-        self.0.momentum_rate()
-    }
-    fn configuration(&self) -> Option<&G> {
-        self.0.configuration()
-    }
-    fn energy(&self) -> f64 {
-        self.0.energy()
-    }
-    fn casimir(&self) -> Option<f64> {
-        self.0.casimir()
-    }
-    fn method_name(&self) -> String {
-        self.0.method_name()
-    }
-    fn info(&self) -> MethodInfo {
-        self.0.info()
-    }
-    fn read_error(&self) -> Option<IntegratorError> {
-        self.0.read_error()
-    }
+    forward_integrator!(self => self.0, self.0);
 }
 
 impl<G: LieGroup> EmbeddedPair for Pair<G> {
