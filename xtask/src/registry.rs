@@ -254,6 +254,31 @@ pub fn all() -> Vec<Generator> {
             }),
         },
         Generator {
+            name: "tolerance-run",
+            about: "a run to a tolerance: the separatrix tumble with DOP853 at 1e-9, its accepted \
+                    and rejected steps and its smallest and largest step (docs/tolerances.md)",
+            takes: "1 s",
+            how: How::Output(Output {
+                runs: &[&[
+                    "run",
+                    "--release",
+                    "-q",
+                    "-p",
+                    "lie-sim",
+                    "--",
+                    "run",
+                    "examples/scenes/separatrix-tumble-tolerance.toml",
+                ]],
+                at: At {
+                    file: "docs/tolerances.md",
+                    part: "",
+                },
+                markdown: false,
+                drop: &["  wall time"],
+                out: None,
+            }),
+        },
+        Generator {
             name: "methods",
             about: "`lie-sim methods --markdown`: the method registry, each configuration's \
                     MethodInfo on the example scenes, and the systems",
