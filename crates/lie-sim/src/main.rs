@@ -950,7 +950,9 @@ fn cmd_sweep(
     });
     output::refuse_clobbering(&[&out], &[scene_path])?;
     let (spec, steps, h) = sweep::plan(&scene)?;
-    sweep::estimate(&spec, shard, steps).check("sweep", overrides.allow_large)?;
+    let cost = bounds::scene_step_cost(&scene, false)?;
+    sweep::estimate(&spec, shard, steps, scene.method.stages(), cost)
+        .check("sweep", overrides.allow_large)?;
     let spinner = show_progress().then(|| {
         let b = indicatif::ProgressBar::new_spinner();
         b.set_message(format!("sweep: shard {shard} of {} members", spec.count));
