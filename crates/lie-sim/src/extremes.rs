@@ -686,9 +686,9 @@ fn sweep(specs: &[MethodSpec], fault: Fault) -> Tally {
 /// `tests/models/modified.rs`.)
 ///
 /// On the quadrotor (unforced: SE(3) with gravity), the compositions and processed forms of
-/// Lie–Poisson miss their order bound 10 (hω)ᵖ ωT at hω = 0.1 (triple-jump-4: 2.9e-2 with
-/// τ = exp, 5.5e-2 with τ = cayley, bound 2e-3; kahan-li-6 and blanes-6 up to 3.8e-4, bound
-/// 2e-5; kahan-li-8 5.2e-7, bound 2e-7), where they hold on every other system. Lie–Poisson
+/// Lie–Poisson miss their κ-scaled order bound at hω = 0.1 (triple-jump-4: 2.9e-2 with
+/// τ = exp, 5.5e-2 with τ = cayley, bound 1.6e-2; processed blanes-6 with τ = cayley 3.8e-4,
+/// bound 1.6e-4), where they hold on every other system. Lie–Poisson
 /// itself (θ = ½, τ = exp) on this state errs by 8.0e-2 at hω = 0.1 and falls 4× per halving
 /// (order 2), 570 times its error on the same state without gravity; triple-jump-4 on it falls
 /// 6.7, 11.3, 14.4, 15.6 times per halving from hω = 0.2 (order 4 only below hω ≈ 0.05). The

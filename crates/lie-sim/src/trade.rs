@@ -838,7 +838,7 @@ mod tests {
         let text = format!(
             "[system]\nkind = \"geodesic-so-n\"\nn = {n}\ninertia = [{}]\n\
              [initial]\nmomentum = [{}]\n\
-             [integrator]\nmethod = \"lie-poisson\"\nstep = 0.01\nduration = 10.0\n",
+             [integrator]\nmethod = \"lie-poisson\"\ntau = \"cayley\"\ntheta = 0.5\nstep = 0.01\nduration = 10.0\n",
             inertia.join(", "),
             momentum.join(", ")
         );
