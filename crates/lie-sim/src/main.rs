@@ -44,8 +44,8 @@ use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use integrators::ensemble::Shard;
 use lie_sim::error::SimError;
 use lie_sim::{
-    choose, input, ladder, listing, methods, output, plot, reference, run, scene, stepping, sweep,
-    trade,
+    bounds, choose, input, ladder, listing, methods, output, plot, reference, run, scene, stepping,
+    sweep, trade,
 };
 use scene::{Overrides, Scene};
 use std::io::IsTerminal;
@@ -921,7 +921,9 @@ fn cmd_sweep(
     });
     output::refuse_clobbering(&[&out], &[scene_path])?;
     let (spec, steps, h) = sweep::plan(&scene)?;
-    sweep::estimate(&spec, shard, steps).check("sweep", overrides.allow_large)?;
+    let cost = bounds::scene_step_cost(&scene, false)?;
+    sweep::estimate(&spec, shard, steps, scene.method.stages(), cost)
+        .check("sweep", overrides.allow_large)?;
     let spinner = show_progress().then(|| {
         let b = indicatif::ProgressBar::new_spinner();
         b.set_message(format!("sweep: shard {shard} of {} members", spec.count));

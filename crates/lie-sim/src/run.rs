@@ -214,15 +214,10 @@ pub fn run_scene(
             .as_ref()
             .map_or(0, |p| p.processor_stages())) as u128;
     let rows = 2 + n / u128::from(scene.stride);
-    let newton = !sim.info().explicit
-        && !matches!(
-            scene.solver.config().kind,
-            integrators::SolverKind::FixedPoint
-        );
     let estimate = crate::bounds::Estimate {
         steps: n.saturating_mul(stages),
         bytes: crate::bounds::Estimate::csv(rows, sim.columns() as u128),
-        step_cost: crate::bounds::stage_cost(sim.momentum_dim(), sim.group_side(), newton),
+        step_cost: crate::bounds::step_cost(sim.as_ref(), &scene.solver),
     };
     estimate.check("run", allow_large)?;
     run_simulation(sim.as_mut(), scene, out, progress)

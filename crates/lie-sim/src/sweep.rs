@@ -240,14 +240,23 @@ fn output<A: Vector>(summaries: &[Summary<A>], dim: usize, path: SweepPath) -> S
     }
 }
 
-/// The work of one shard of a sweep before it starts: its members × the steps of each, and its
-/// rows of the summary CSV.
-pub fn estimate(spec: &SweepSpec, shard: Shard, steps: usize) -> crate::bounds::Estimate {
+/// The work of one shard of a sweep before it starts: its members × the steps of each (a
+/// composite step counts its stages), each at `step_cost` ([`crate::bounds::scene_step_cost`]),
+/// and its rows of the summary CSV.
+pub fn estimate(
+    spec: &SweepSpec,
+    shard: Shard,
+    steps: usize,
+    stages: usize,
+    step_cost: u128,
+) -> crate::bounds::Estimate {
     let members = (spec.count / shard.count()) as u128 + 1;
     crate::bounds::Estimate {
-        steps: members.saturating_mul(steps as u128),
+        steps: members
+            .saturating_mul(steps as u128)
+            .saturating_mul(stages as u128),
         bytes: crate::bounds::Estimate::csv(members + 2, 12),
-        step_cost: 1,
+        step_cost,
     }
 }
 

@@ -111,7 +111,11 @@ fn steps_of(m: &MethodSpec, ladder: &[f64], duration: f64) -> Vec<f64> {
 /// counts its stages), `repeats` times. The reference is not counted: its refinement is bounded
 /// by `--reference-budget` (and its first two runs, at h₀ = 1/ω and h₀/2, cost less than the
 /// ladder's coarsest level), nor are the tolerance-driven runs, whose steps are not known ahead
-/// (each is bounded by the driver's budget of attempted steps). Bytes: the table.
+/// (each is bounded by the driver's budget of attempted steps). A step costs what an implicit
+/// step on the scene's group costs ([`crate::bounds::scene_step_cost`]: an upper figure, the
+/// candidates include implicit methods), so that a trade on SO(50) is refused as `run` refuses
+/// it; a scene whose method does not build counts 1 (the trade reports that error itself).
+/// Bytes: the table.
 pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds::Estimate {
     let per_unit_h: u128 = candidates()
         .iter()
@@ -125,7 +129,7 @@ pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds:
             .saturating_mul(per_unit_h)
             .saturating_mul(repeats as u128),
         bytes: crate::bounds::Estimate::csv((candidates().len() * (ladder.len() + 1)) as u128, 15),
-        step_cost: 1,
+        step_cost: crate::bounds::scene_step_cost(scene, true).unwrap_or(1),
     }
 }
 
@@ -820,6 +824,58 @@ mod tests {
         rows.push(row(0.00625, 8e-8));
         let refs: Vec<&TradeRow> = rows.iter().collect();
         assert!((fitted_order(&refs, 1e-13).unwrap() - 4.0).abs() < 1e-12);
+    }
+
+    /// The geodesic scene on SO(n) with Lie–Poisson (Newton) over T = 10.
+    fn so_n_scene(n: usize) -> Scene {
+        let d = n * (n - 1) / 2;
+        let inertia: Vec<String> = (0..n)
+            .map(|i| format!("{}", 1.0 + 0.1 * i as f64))
+            .collect();
+        let momentum: Vec<String> = (0..d)
+            .map(|i| format!("{}", 0.1 / (1 + i) as f64))
+            .collect();
+        let text = format!(
+            "[system]\nkind = \"geodesic-so-n\"\nn = {n}\ninertia = [{}]\n\
+             [initial]\nmomentum = [{}]\n\
+             [integrator]\nmethod = \"lie-poisson\"\ntau = \"cayley\"\ntheta = 0.5\nstep = 0.01\nduration = 10.0\n",
+            inertia.join(", "),
+            momentum.join(", ")
+        );
+        Scene::parse(&text, "so(n)", "so-n", Default::default()).unwrap()
+    }
+
+    /// A trade counts a step at its cost on the group, as `run` does: the same ladder (every
+    /// candidate over 3000 steps) passes on SO(3) and is refused on SO(50), whose implicit step
+    /// costs ~6·10⁵ steps on SO(3). With the step counted as one on SO(3) (as before) SO(50)
+    /// passes and this fails.
+    #[test]
+    fn a_trade_on_a_large_group_counts_its_step_cost() {
+        let ladder = [0.01, 0.005];
+        let (small, large) = (so_n_scene(3), so_n_scene(50));
+        assert_eq!(crate::bounds::scene_step_cost(&small, true).unwrap(), 1);
+        assert!(crate::bounds::scene_step_cost(&large, true).unwrap() > 100_000);
+        assert!(estimate(&small, &ladder, 1).check("trade", false).is_ok());
+        let e = estimate(&large, &ladder, 1)
+            .check("trade", false)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("SO(3)-step equivalents"), "{e}");
+        // A sweep of 100 members of its 1000 steps likewise.
+        let spec = crate::scene::SweepSpec {
+            count: 100,
+            seed: 1,
+            kind: crate::scene::SweepKind::MomentaOnSphere,
+            monitor_every: 1,
+        };
+        let shard = integrators::ensemble::Shard::all();
+        let cost = |s: &Scene| crate::bounds::scene_step_cost(s, false).unwrap();
+        assert!(crate::sweep::estimate(&spec, shard, 1000, 1, cost(&small))
+            .check("sweep", false)
+            .is_ok());
+        assert!(crate::sweep::estimate(&spec, shard, 1000, 1, cost(&large))
+            .check("sweep", false)
+            .is_err());
     }
 
     #[test]

@@ -510,10 +510,28 @@ impl Modulus {
     /// so that a change of u needs only the changes of n and of the bounded B (and c·Δu: no
     /// difference of two large values). `rf` = R_F(C², D², 1) if known (else NaN).
     ///
-    /// For k' ≥ 2⁻⁶⁰, c = 0, L = Λ(K) and B is the integral over w: even n,
-    /// Λ(w) = S·R_F(C², D², 1) − (β/3) S³ R_J(C², D², 1, 1 + βS²) (DLMF 19.25.14); odd n,
+    /// For k' ≥ 2⁻⁶⁰ and β ≥ 1, c = 0, L = Λ(K) and B is the integral Λₙ(w) over w: even n,
+    /// Λ(w) = S·R_F(C², D², 1) − (β/3) S³ R_J(C², D², 1, 1 + βS²) (DLMF 19.25.14), two terms of
+    /// size w that cancel to O(w/√β), so evaluated as
+    /// `Λ(w) = atan(qS/(CD))/q + (k²/3β) S³ R_J(C², D², 1, 1 + k²S²/β)`, q² = (1 + β)(1 + k²/β)
+    /// (DLMF 19.7.9: Π(φ, −β) + Π(φ, −k²/β) = F + √c R_C((c − 1)(c − k²), (c + β)(c + k²/β)),
+    /// c = 1/S²), and L = π/2q + (k²/3β) R_J(0, k'², 1, 1 + k²/β); odd n,
     /// ∫₀^w dv/(1 + β cd²v) = [k²w + βk'² Π(ν; am w, k)/(1 + β)]/(k² + β) with
-    /// ν = (k² + β)/(1 + β) (the integrand is (1 − k²sn²)/((1 + β)(1 − ν sn²))). Asymptotically
+    /// ν = (k² + β)/(1 + β) (the integrand is (1 − k²sn²)/((1 + β)(1 − ν sn²)); a sum of
+    /// positive terms).
+    /// For β < 1, Λ is u less a part of relative size β: c = 1, L = Λ(K) − K =
+    /// −(β/3) R_J(0, k'², 1, 1 + β) and B = Λₙ(w) − w, from the same formulas with F(am w) = w
+    /// taken out analytically,
+    ///
+    /// ```text
+    /// even n:  B = −(β/3) S³ R_J(C², D², 1, 1 + βS²),
+    /// odd n:   B = −βw/(1 + β) + βk'²ν S³ R_J(C², D², 1, 1 − νS²) / (3(1 + β)(k² + β)),
+    /// ```
+    ///
+    /// so that B and its changes carry a rounding of β|w|, not of |w|: the free body's precession
+    /// multiplies ΔΛ by |Π|(I₃ − I₁)/(I₁I₃λ), which is large where λ is small (a nearly symmetric
+    /// body near its separatrix, λ ∝ √(I₂ − I₁)), and a difference of two values of Λ(w) of size
+    /// K would leave it an error of ε·K times that. Asymptotically
     /// (sn w = tanh w, cd w = 1): c = 1/(1 + β), L = √β atan √β/(1 + β) and
     /// B = √β atan(√β tanh w)/(1 + β) for even n, 0 for odd — on the separatrix (K = ∞, n fixed)
     /// Λ = (u + √β atan(√β tanh u))/(1 + β) for every u.
@@ -529,38 +547,64 @@ impl Modulus {
             };
         }
         let (s, c2, d2) = (jac.s, jac.c * jac.c, jac.d * jac.d);
-        let rf = if rf.is_nan() {
-            carlson_rf(c2, d2, 1.0)
-        } else {
-            rf
+        let rf = || {
+            if rf.is_nan() {
+                carlson_rf(c2, d2, 1.0)
+            } else {
+                rf
+            }
         };
         let s3 = s * s * s;
+        let slope = beta < 1.0;
         if odd {
             let k2 = self.k2();
             let nu = (k2 + beta) / (1.0 + beta);
             // 1 − νS² = C² + k'²S²/(1 + β): no cancellation as ν → 1.
             let p = c2 + self.kc2 * s * s / (1.0 + beta);
-            let pi_nu = s * rf + nu / 3.0 * s3 * carlson_rj(c2, d2, 1.0, p);
-            (k2 * w + beta * self.kc2 * pi_nu / (1.0 + beta)) / (k2 + beta)
+            let rj = nu / 3.0 * s3 * carlson_rj(c2, d2, 1.0, p);
+            if slope {
+                -beta * w / (1.0 + beta) + beta * self.kc2 * rj / ((1.0 + beta) * (k2 + beta))
+            } else {
+                let pi_nu = s * rf() + rj;
+                (k2 * w + beta * self.kc2 * pi_nu / (1.0 + beta)) / (k2 + beta)
+            }
+        } else if slope {
+            -beta / 3.0 * s3 * carlson_rj(c2, d2, 1.0, 1.0 + beta * s * s)
         } else {
-            s * rf - beta / 3.0 * s3 * carlson_rj(c2, d2, 1.0, 1.0 + beta * s * s)
+            // DLMF 19.7.9 with α²ω² = k²: Π(φ, −β) = F − Π(φ, −k²/β) + √c R_C(…), c = csc²φ,
+            // where R_C closes to atan(qS/(CD))/q, q² = (1 + β)(1 + k²/β) (its two arguments
+            // differ by exactly S²q²); F − Π(φ, −k²/β) is a positive O(1/β) term.
+            let k2 = self.k2();
+            let q = ((1.0 + beta) * (1.0 + k2 / beta)).sqrt();
+            (q * s / (jac.c * jac.d)).atan() / q
+                + k2 / (3.0 * beta) * s3 * carlson_rj(c2, d2, 1.0, 1.0 + k2 * s * s / beta)
         }
     }
 
     /// L of [`Modulus::third_kind_part`]: Λ(K) = Π(−β, k) = K − (β/3) R_J(0, k'², 1, 1 + β)
-    /// (DLMF 19.25.2), asymptotically √β atan √β/(1 + β).
+    /// (DLMF 19.25.2) for β ≥ 1, that less K for β < 1, asymptotically √β atan √β/(1 + β).
     pub fn third_kind_quarter(&self, beta: f64) -> f64 {
         if self.asymptotic {
             let sb = beta.sqrt();
             return sb * sb.atan() / (1.0 + beta);
         }
-        self.quarter - beta / 3.0 * carlson_rj(0.0, self.kc2, 1.0, 1.0 + beta)
+        if beta < 1.0 {
+            -beta / 3.0 * carlson_rj(0.0, self.kc2, 1.0, 1.0 + beta)
+        } else {
+            // The limit φ → π/2 of the β ≥ 1 form of `third_kind_part` (R_C(0, y) = π/2√y).
+            let k2 = self.k2();
+            let q = ((1.0 + beta) * (1.0 + k2 / beta)).sqrt();
+            core::f64::consts::FRAC_PI_2 / q
+                + k2 / (3.0 * beta) * carlson_rj(0.0, self.kc2, 1.0, 1.0 + k2 / beta)
+        }
     }
 
-    /// c of [`Modulus::third_kind_part`]: 0, asymptotically 1/(1 + β).
+    /// c of [`Modulus::third_kind_part`]: 0 for β ≥ 1, 1 for β < 1, asymptotically 1/(1 + β).
     pub fn third_kind_slope(&self, beta: f64) -> f64 {
         if self.asymptotic {
             1.0 / (1.0 + beta)
+        } else if beta < 1.0 {
+            1.0
         } else {
             0.0
         }

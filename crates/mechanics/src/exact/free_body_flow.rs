@@ -72,7 +72,12 @@ const PHASE_LIMIT: f64 = 4_503_599_627_370_496.0;
 ///   it; t = 1, 10, 1000): Π within 0.28× the spread, or of 4ε(1 + λt)|Π| where the spread is
 ///   below that (bound 1.5×); with R, states an ulp off it, family states whose discriminant
 ///   rounds to 0 in doubles, and states 10⁻¹⁰ to 2·10⁻¹⁹ from the middle axis (the last past
-///   k' = 2⁻⁶⁰, where the k = 1 limits take over): 0.70× the same (bound 2×);
+///   k' = 2⁻⁶⁰, where the k = 1 limits take over): 0.49× the same (bound 2×);
+/// - on and within 2 ulps of the separatrix of the nearly symmetric body 𝕀 = (2, 2(1 + 10⁻¹²), 3),
+///   where λ ≈ 3·10⁻⁷ and the precession Δψ multiplies the change of Λ by |Π|(I₃ − I₁)/(I₁I₃λ)
+///   (t = 1, 10, 1000): Π and R within 0.23× the same (bound 2×), where a difference of two values
+///   of Λ(w) of size K left R 4e-12 to 4e-10 off (Λ's slope form for β < 1 and the DLMF 19.7.9
+///   form for β ≥ 1, [`Modulus::third_kind_part`]);
 /// - on the separatrix (in exact arithmetic): Π and R within 0.5 ε(1 + |Π|t/I_min) (bound 2) to
 ///   t = 10⁶ (the phase's own rounding; the neighbours, off the separatrix, spread by O(1)), and
 ///   no error or NaN for the family to t = ±10⁶;

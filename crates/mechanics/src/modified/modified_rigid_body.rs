@@ -129,6 +129,19 @@ fn polynomial<const N: usize>(
     (f, g, hs)
 }
 
+/// The power of two s nearest 1/|h| and 1/s, both normal numbers (1, 1 for h = 0 or a
+/// subnormal h, where the modification vanishes or is below every rounding of H).
+fn step_scale(h: f64) -> (f64, f64) {
+    let h = h.abs();
+    if h < f64::MIN_POSITIVE {
+        return (1.0, 1.0);
+    }
+    // k = −round(log₂ h), within the normal exponents so that 2ᵏ and 2⁻ᵏ are both exact.
+    let k = (-h.log2().round()).clamp(-1022.0, 1022.0) as i32;
+    let pow2 = |k: i32| f64::from_bits(((k + 1023) as u64) << 52);
+    (pow2(k), pow2(-k))
+}
+
 /// The quadratic part `Q(y) = Σ qₖ yᵏ` ([`QUADRATIC`] order) as the symmetric matrix A with
 /// `Q(y) = yᵀAy`: `∇Q = 2Ay`, `∇²Q = 2A`.
 fn quadratic_form(q: &[f64; 6]) -> Matrix3<f64> {
@@ -212,10 +225,14 @@ pub struct ModifiedRigidBody<T: ModifiedTau> {
     /// The principal axes (columns): Π's principal coordinates are axesᵀΠ.
     axes: Matrix3<f64>,
     diagonal: bool,
-    /// h²H₂ as the quadratic form A of `quadratic_form`: h²H₂ = yᵀAy.
+    /// (hs)²H₂ as the quadratic form A of `quadratic_form`: (hs)²H₂(p̂) = ŷᵀAŷ (see `s`).
     a2: Matrix3<f64>,
-    /// h⁴ times H₄'s coefficients of [`CUBIC`] (order 6 only).
+    /// (hs)⁴ times H₄'s coefficients of [`CUBIC`] (order 6 only).
     q4: Option<[f64; 10]>,
+    /// The scale s = 2ᵏ nearest 1/|h| (1 for h = 0) and 1/s: the modification is evaluated at
+    /// p̂ = p/s, where hs ≈ 1 (see [`ModifiedRigidBody::modification`]).
+    s: f64,
+    inv_s: f64,
     h: f64,
     _tau: core::marker::PhantomData<T>,
 }
@@ -235,11 +252,14 @@ impl<T: ModifiedTau> ModifiedRigidBody<T> {
         let (axes, moments) = body.principal_frame();
         let (axes, inv) = (*axes, moments.map(|m| 1.0 / m));
         let (t2, t4) = coefficients::tables(T::CAYLEY, scheme.theta() == 0.5);
-        let h2 = h * h;
-        let a2 = quadratic_form(&collapse(t2, &QUADRATIC, &inv)) * h2;
+        let (s, inv_s) = step_scale(h);
+        // hs is h's mantissa (within [1/√2, √2]): (hs)² and (hs)⁴ neither overflow nor
+        // underflow, whatever h.
+        let hs2 = (h * s) * (h * s);
+        let a2 = quadratic_form(&collapse(t2, &QUADRATIC, &inv)) * hs2;
         let q4 = (scheme.order() == 6).then(|| {
             let mut q4 = collapse(t4, &CUBIC, &inv);
-            q4.iter_mut().for_each(|c| *c *= h2 * h2);
+            q4.iter_mut().for_each(|c| *c *= hs2 * hs2);
             q4
         });
         Ok(Self {
@@ -250,6 +270,8 @@ impl<T: ModifiedTau> ModifiedRigidBody<T> {
             axes,
             a2,
             q4,
+            s,
+            inv_s,
             h,
             _tau: core::marker::PhantomData,
         })
@@ -293,8 +315,8 @@ impl<T: ModifiedTau> ModifiedRigidBody<T> {
     fn squares(&self, pi: &Vector3<f64>) -> Vector3<f64> {
         self.principal(pi).map(|x| x * x)
     }
-    /// The modification M(y) = h²H₂ + h⁴H₄ at yᵢ = pᵢ² (p the principal coordinates), its
-    /// gradient and Hessian in y.
+    /// The scaled modification M̂(ŷ) = (hs)²H₂ + (hs)⁴H₄ at ŷᵢ = p̂ᵢ² (p̂ = p/s the scaled
+    /// principal coordinates), its gradient and Hessian in ŷ.
     #[inline]
     fn modification_y(&self, y: &Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>) {
         let ay = self.a2 * y;
@@ -307,25 +329,38 @@ impl<T: ModifiedTau> ModifiedRigidBody<T> {
         }
         (f, g, hs)
     }
-    /// M at the principal coordinates p and its gradient and Hessian in p:
-    /// ∂M/∂pᵢ = 2pᵢ ∂M/∂yᵢ, ∂²M/∂pᵢ∂pⱼ = 2δᵢⱼ ∂M/∂yᵢ + 4pᵢpⱼ ∂²M/∂yᵢ∂yⱼ.
+    /// The modification M(p) = h²H₂(p) + h⁴H₄(p) at the principal coordinates p, its gradient
+    /// and Hessian in p, evaluated scale-free: H₂ and H₄ are homogeneous of degrees 4 and 6 in
+    /// p, so with p̂ = p/s
+    ///
+    /// ```text
+    /// M(p) = s² M̂(p̂),  ∂M/∂p = s ∂M̂/∂p̂,  ∂²M/∂p² = ∂²M̂/∂p̂²,  M̂ = (hs)²H₂ + (hs)⁴H₄,
+    /// ```
+    ///
+    /// and s = 2ᵏ ≈ 1/|h| makes p̂ ≈ h·p, of the size of the step's rotation angle: no power of
+    /// h or |Π| is formed, so |Π| from 10⁻¹⁵⁰ to 10¹⁵⁰ (h from 10¹⁵⁰ to 10⁻¹⁵⁰) costs no range
+    /// (h⁴ alone would overflow or underflow there). Multiplying by s is exact.
+    /// In ŷ = p̂²: ∂M̂/∂p̂ᵢ = 2p̂ᵢ ∂M̂/∂ŷᵢ, ∂²M̂/∂p̂ᵢ∂p̂ⱼ = 2δᵢⱼ ∂M̂/∂ŷᵢ + 4p̂ᵢp̂ⱼ ∂²M̂/∂ŷᵢ∂ŷⱼ.
     #[inline]
     fn modification(&self, p: &Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>) {
+        let p = p * self.inv_s;
         let (f, gy, hy) = self.modification_y(&p.map(|x| x * x));
-        let grad = p.component_mul(&gy) * 2.0;
+        let grad = p.component_mul(&gy) * (2.0 * self.s);
         let hess =
             Matrix3::from_diagonal(&(gy * 2.0)) + (p * p.transpose()).component_mul(&hy) * 4.0;
-        (f, grad, hess)
+        (self.s * (self.s * f), grad, hess)
     }
-    /// ∂M/∂p alone (the velocity's hot path: no Hessian).
+    /// ∂M/∂p alone (the velocity's hot path: no Hessian), scale-free as
+    /// [`ModifiedRigidBody::modification`].
     #[inline]
     fn modification_gradient(&self, p: &Vector3<f64>) -> Vector3<f64> {
+        let p = p * self.inv_s;
         let y = p.map(|x| x * x);
         let mut gy = self.a2 * y * 2.0;
         if let Some(c) = &self.q4 {
             gy += cubic(c, &y).1;
         }
-        p.component_mul(&gy) * 2.0
+        p.component_mul(&gy) * (2.0 * self.s)
     }
     /// A principal-frame vector in body coordinates.
     #[inline]

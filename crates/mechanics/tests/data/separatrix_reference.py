@@ -4,7 +4,9 @@ On the separatrix (|Π|² = 2hI_mid exactly, in rational arithmetic): Π approac
 for ever; times up to 10⁶. Near it: an ulp either side, the issue-#29 family states whose
 discriminant rounds to 0 in floating point (found here by evaluating the flow's former formula in
 doubles), and states 10⁻¹⁰ to 2·10⁻¹⁹ from the middle axis (k'² from 10⁻²⁰ to 10⁻³⁷, past the
-flow's switch to the k = 1 limits at k' = 2⁻⁶⁰). Closer states (k'² below the double range) would
+flow's switch to the k = 1 limits at k' = 2⁻⁶⁰). On the nearly symmetric body
+𝕀 = (2, 2(1 + 10⁻¹²), 3): states on and within 2 ulps of its separatrix, where the orbit's phase
+moves by λt ≈ 3·10⁻⁷ t while the body precesses at O(1). Closer states (k'² below the double range) would
 need some 700 digits here, hours per line: the crate's functions there are checked against
 elliptic_reference.py down to k' = e⁻⁴⁰⁰ instead.
 
@@ -60,6 +62,19 @@ def issue_states(count):
     return out
 
 
+def nearly_symmetric_states():
+    """On and within 2 ulps of the separatrix of the nearly symmetric body 𝕀 = (2, 2(1 + 10⁻¹²), 3)
+    (I₂ − I₁ at 10⁻¹² of 𝕀: the motion along the orbit is slow, λ ≈ 3·10⁻⁷, and the precession
+    is the flow's whole motion), the lie-sim extremes harness's states: Π₁ = 0.7, Π₂ = 1, Π₃ from
+    the separatrix condition in doubles, then moved by ±1, ±2 ulps."""
+    I = (2.0, 2.0 * (1.0 + 1e-12), 3.0)
+    p1 = 0.7
+    p3 = math.sqrt(p1 * p1 * (I[1] / I[0] - 1.0) / (1.0 - I[1] / I[2]))
+    return [
+        (f"nearly-symmetric{k:+d}", I, (p1, 1.0, fb.ulps(p3, k)), NEAR) for k in (0, 1, -1, 2, -2)
+    ]
+
+
 CASES = [
     ("on-236", (2.0, 3.0, 6.0), (1.0, 0.5, 1.0), ON),
     ("on-236-other-branch", (2.0, 3.0, 6.0), (-1.0, -0.5, 1.0), ON),
@@ -75,7 +90,7 @@ CASES = [
     ("axis-1e-10", (1.0, 2.0, 3.0), (1e-10, 1.0, 1e-10), NEAR),
     ("axis-1e-18", (1.0, 2.0, 3.0), (1e-18, 1.0, 1e-18), NEAR),
     ("axis-2e-19", (1.0, 2.0, 3.0), (2e-19, 1.0, 2e-19), NEAR),
-] + issue_states(4)
+] + issue_states(4) + nearly_symmetric_states()
 
 
 def row(args):

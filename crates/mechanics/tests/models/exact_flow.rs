@@ -365,11 +365,14 @@ fn separatrix_cases() -> Vec<SeparatrixCase> {
 /// on it, Π and R within 2ε·(1 + |Π|t/I_min) of the reference at t up to 10⁶ — the phase's own
 /// rounding, where the inputs within ±2 ulps (off the separatrix) spread by O(1); near it (an ulp
 /// off, the issue's family states whose floating-point discriminant was 0, 10⁻¹⁰ to 2·10⁻¹⁹
-/// from the middle axis), within 2× the spread of the true solutions of the inputs within
+/// from the middle axis, the nearly symmetric body 𝕀 = (2, 2(1 + 10⁻¹²), 3) on and within 2 ulps
+/// of its separatrix), within 2× the spread of the true solutions of the inputs within
 /// ±2 ulps, or 4 ε·(1 + λt) where that spread is below it. Measured: on it 0.5 ε(1 + |Π|t/I_min),
-/// near it 0.70× the spread. The former flow returned an error (a NaN attitude) on the
-/// separatrix once cn² underflowed; a discriminant evaluated in doubles errs by 2|Π| (issue-3,
-/// t = 1000).
+/// near it 0.49× the spread (the nearly symmetric states 0.23×). The former flow returned an
+/// error (a NaN attitude) on the separatrix once cn² underflowed; a discriminant evaluated in
+/// doubles errs by 2|Π| (issue-3, t = 1000); Λ's change taken as a difference of two values of
+/// size K (β ≥ 1, the nearly symmetric states 1 and 2 ulps inside) left R 7.4e-13 off at t = 1,
+/// 520× the bound.
 #[test]
 fn separatrix_states_match_mpmath() {
     let r0 = separatrix_r0();
