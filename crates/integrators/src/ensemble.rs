@@ -111,13 +111,18 @@ impl Shard {
     }
     /// The indices of a sweep of `len` members that belong to this shard, increasing.
     pub fn indices(&self, len: usize) -> Vec<usize> {
+        self.iter(len).collect()
+    }
+    /// The indices of [`Shard::indices`], one at a time (a sweep that goes through its members in
+    /// chunks holds none of them in memory).
+    pub fn iter(&self, len: usize) -> core::iter::StepBy<core::ops::Range<usize>> {
         match self.layout {
             ShardLayout::Contiguous => {
                 // u128 so that i·N cannot overflow for any usize N.
                 let bound = |i: usize| (i as u128 * len as u128 / self.count as u128) as usize;
-                (bound(self.index)..bound(self.index + 1)).collect()
+                (bound(self.index)..bound(self.index + 1)).step_by(1)
             }
-            ShardLayout::Strided => (self.index..len).step_by(self.count).collect(),
+            ShardLayout::Strided => (self.index..len).step_by(self.count),
         }
     }
 }
@@ -219,31 +224,152 @@ impl<A: Vector> Summary<A> {
     /// One CSV line (no newline); floats with `{:e}` (shortest round-trip form, so a CSV written
     /// and parsed back gives the same bits); missing values as empty fields.
     pub fn csv_row(&self, dim: usize) -> String {
-        use core::fmt::Write as _;
-        // One buffer, written in place (a row is formatted per member: a sweep of 10⁶ members
-        // formats 10⁶ rows, so no temporary strings).
         let mut s = String::with_capacity(48 + 25 * (dim + 3));
-        // Writing into a String cannot fail.
-        let _ = write!(
-            s,
-            "{},{},{},{:e}",
-            self.index,
-            self.status.label(),
-            self.steps,
-            self.time
-        );
-        for i in 0..dim {
-            s.push(',');
-            if let Some(m) = self.momentum.as_ref().filter(|m| i < m.dim()) {
-                let _ = write!(s, "{:e}", m.get(i));
-            }
-        }
-        let _ = write!(s, ",{:e},{:e},", self.initial_energy, self.max_energy_error);
-        if let Some(c) = self.max_casimir_error {
-            let _ = write!(s, "{c:e}");
-        }
+        self.write_csv_row(dim, &mut s);
         s
     }
+    /// Appends [`Summary::csv_row`] to `out` (a sweep of 10⁶ members formats 10⁶ rows: into one
+    /// buffer, without a string per row).
+    pub fn write_csv_row(&self, dim: usize, out: &mut String) {
+        use core::fmt::Write as _;
+        // Writing into a String cannot fail.
+        let _ = write!(
+            out,
+            "{},{},{},",
+            self.index,
+            self.status.label(),
+            self.steps
+        );
+        push_exp(out, self.time);
+        for i in 0..dim {
+            out.push(',');
+            if let Some(m) = self.momentum.as_ref().filter(|m| i < m.dim()) {
+                push_exp(out, m.get(i));
+            }
+        }
+        out.push(',');
+        push_exp(out, self.initial_energy);
+        out.push(',');
+        push_exp(out, self.max_energy_error);
+        out.push(',');
+        if let Some(c) = self.max_casimir_error {
+            push_exp(out, c);
+        }
+    }
+}
+
+/// Whether |x| = (d + ½)·10^q exactly. With x = m·2^k (m odd) and (d + ½)·10^q =
+/// (2d + 1)·5^q·2^(q−1), both sides' odd parts and powers of two must agree.
+fn is_tie_above(x: f64, d: u64, q: i32) -> bool {
+    let bits = x.abs().to_bits();
+    let (fraction, biased) = (bits & ((1 << 52) - 1), (bits >> 52) as i32);
+    let (m, e) = if biased == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | 1 << 52, biased - 1075)
+    };
+    if m == 0 {
+        return false;
+    }
+    let t = m.trailing_zeros() as i32;
+    let (m, odd) = (u128::from(m >> t), 2 * u128::from(d) + 1);
+    // m < 2⁵³ and 2d + 1 < 2⁵⁸: beyond these powers of five the two cannot be equal, and below
+    // them the products stay under 2¹²⁰.
+    e + t == q - 1
+        && if q >= 0 {
+            q <= 25 && odd * 5u128.pow(q as u32) == m
+        } else {
+            -q <= 27 && m * 5u128.pow((-q) as u32) == odd
+        }
+}
+
+/// Appends x as `format!("{x:e}")` writes it — the shortest decimal that reads back as x, in
+/// the form `d[.ddd]e<exp>` (`-1.5e-3`, `2e0`, `-0e0`, `NaN`, `inf`) — with the digits from `ryu`
+/// (Adams 2018: the shortest, closest digits, as the standard library's Grisu/Dragon finds them,
+/// at a fraction of the cost; where two are equally close, the standard library's choice; test
+/// `push_exp_writes_what_format_e_writes`), so that the rows of a sweep of 10⁶ members do not
+/// spend their time in the formatter.
+pub fn push_exp(out: &mut String, x: f64) {
+    if !x.is_finite() {
+        use core::fmt::Write as _;
+        let _ = write!(out, "{x:e}");
+        return;
+    }
+    let mut buffer = ryu::Buffer::new();
+    let text = buffer.format_finite(x);
+    let (sign, body) = match text.strip_prefix('-') {
+        Some(body) => ("-", body),
+        None => ("", text),
+    };
+    // ryu writes `d[.ddd]e<exp>` for large and small magnitudes and `int.frac` otherwise: take
+    // the significant digits and the decimal exponent of the first one from either.
+    let mut digits = [0u8; 24];
+    let mut n = 0;
+    let exp = match body.split_once('e') {
+        Some((mantissa, exp)) => {
+            for b in mantissa.bytes().filter(|&b| b != b'.') {
+                digits[n] = b;
+                n += 1;
+            }
+            // ryu writes a plain integer exponent; it always parses.
+            exp.parse::<i32>().unwrap_or(0)
+        }
+        None => {
+            let (int, frac) = body.split_once('.').unwrap_or((body, ""));
+            let mut leading = 0i32;
+            for b in int.bytes().chain(frac.bytes()) {
+                if n == 0 && b == b'0' {
+                    leading += 1;
+                } else {
+                    digits[n] = b;
+                    n += 1;
+                }
+            }
+            int.len() as i32 - 1 - leading
+        }
+    };
+    while n > 1 && digits[n - 1] == b'0' {
+        n -= 1;
+    }
+    // Where x lies exactly halfway between two shortest decimals, ryu takes the one with the even
+    // last digit and the standard library the larger: a tie needs 16 or 17 digits (with fewer, the
+    // two are not both within half an ulp of x), and the even digit then becomes the odd one above
+    // (no carry).
+    if n >= 16 && (digits[n - 1] - b'0').is_multiple_of(2) {
+        let d = digits[..n]
+            .iter()
+            .fold(0u64, |d, &b| 10 * d + u64::from(b - b'0'));
+        if is_tie_above(x, d, exp - (n as i32 - 1)) {
+            digits[n - 1] += 1;
+        }
+    }
+    out.push_str(sign);
+    if n == 0 {
+        out.push_str("0e0");
+        return;
+    }
+    out.push(digits[0] as char);
+    if n > 1 {
+        out.push('.');
+        // ASCII digits.
+        out.push_str(core::str::from_utf8(&digits[1..n]).unwrap_or_default());
+    }
+    out.push('e');
+    let mut itoa = [0u8; 12];
+    let mut k = itoa.len();
+    let mut e = exp.unsigned_abs();
+    loop {
+        k -= 1;
+        itoa[k] = b'0' + (e % 10) as u8;
+        e /= 10;
+        if e == 0 {
+            break;
+        }
+    }
+    if exp < 0 {
+        out.push('-');
+    }
+    out.push_str(core::str::from_utf8(&itoa[k..]).unwrap_or_default());
 }
 
 /// A sweep: members `P` (index = position), step h, number of steps.

@@ -12,9 +12,9 @@
 //! on how it is run. The path is part of the sweep's fingerprint: shards of the batched and the
 //! scalar path are not merged. `lie-sim sweep --scalar` takes the scalar path.
 //!
-//! **Memory.** The members go through in chunks of [`CHUNK`] bodies (their state, a few hundred
-//! bytes each), so the batch's state does not grow with N; the shard's initial momenta and its
-//! rows are kept until the CSV is written, as on the scalar path.
+//! **Memory.** The sweep hands a [`Plan`] its members a chunk at a time (`crate::sweep::CHUNK`,
+//! their state a few hundred bytes each), and writes each chunk's rows before the next is drawn,
+//! so that nothing grows with N.
 
 use crate::methods::row::Batched;
 use crate::methods::MethodSpec;
@@ -23,10 +23,6 @@ use batch::{Batch, BatchError, BodyModel, Kernel, Level, QuaternionRk4, Strang};
 use integrators::ensemble::{Execution, Summary};
 use lie_groups::{So3, Vector};
 use nalgebra::Vector3;
-
-/// Members per batch: enough vectors of lanes to keep every thread busy, few enough that the
-/// state of a chunk stays in the last-level cache's neighbourhood and memory stays bounded.
-pub const CHUNK: usize = 1 << 16;
 
 /// A sweep's batched run: the kernel, the body, g₀ and the instruction set.
 #[derive(Debug, Clone)]
@@ -90,14 +86,14 @@ impl Plan {
         execution: Execution,
     ) -> Result<Vec<Summary<Vector3<f64>>>, BatchError> {
         match self.kind {
-            Batched::Strang => self.chunks(
+            Batched::Strang => self.batch(
                 Strang::new(self.body.clone()),
                 members,
                 indices,
                 (h, steps, monitor_every),
                 execution,
             ),
-            Batched::Rk4 => self.chunks(
+            Batched::Rk4 => self.batch(
                 QuaternionRk4::new(self.body.clone()),
                 members,
                 indices,
@@ -107,7 +103,7 @@ impl Plan {
         }
     }
 
-    fn chunks<K: Kernel, A: Vector>(
+    fn batch<K: Kernel, A: Vector>(
         &self,
         kernel: K,
         members: &[A],
@@ -115,21 +111,17 @@ impl Plan {
         (h, steps, monitor_every): (f64, usize, usize),
         execution: Execution,
     ) -> Result<Vec<Summary<Vector3<f64>>>, BatchError> {
-        let mut out = Vec::with_capacity(members.len());
-        for (chunk, index) in members.chunks(CHUNK).zip(indices.chunks(CHUNK)) {
-            let momenta: Vec<Vector3<f64>> = chunk
-                .iter()
-                .map(|mu| Vector3::from_fn(|i, _| mu.get(i)))
-                .collect();
-            let mut b = Batch::new(kernel.clone(), &momenta, &[self.g0], self.level)?
-                .monitor_every(monitor_every as u64)
-                .parallel(execution);
-            if let Some(c) = &self.composition {
-                b = b.with_composition(c.clone())?;
-            }
-            b.run(h, steps as u64)?;
-            out.extend(b.summaries(|i| index[i]));
+        let momenta: Vec<Vector3<f64>> = members
+            .iter()
+            .map(|mu| Vector3::from_fn(|i, _| mu.get(i)))
+            .collect();
+        let mut b = Batch::new(kernel, &momenta, &[self.g0], self.level)?
+            .monitor_every(monitor_every as u64)
+            .parallel(execution);
+        if let Some(c) = &self.composition {
+            b = b.with_composition(c.clone())?;
         }
-        Ok(out)
+        b.run(h, steps as u64)?;
+        Ok(b.summaries(|i| indices[i]))
     }
 }

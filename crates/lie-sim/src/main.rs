@@ -924,22 +924,36 @@ fn cmd_sweep(
     let cost = bounds::scene_step_cost(&scene, false)?;
     sweep::estimate(&spec, shard, steps, scene.method.stages(), cost)
         .check("sweep", overrides.allow_large)?;
-    let spinner = show_progress().then(|| {
-        let b = indicatif::ProgressBar::new_spinner();
-        b.set_message(format!("sweep: shard {shard} of {} members", spec.count));
+    let members = shard.iter(spec.count).len();
+    let bar = show_progress().then(|| {
+        let b = indicatif::ProgressBar::new(members as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} members (eta {eta})",
+        ) {
+            b.set_style(style);
+        }
         b.enable_steady_tick(std::time::Duration::from_millis(200));
         b
     });
-    let ran = sweep::run(&scene, shard, threads.map(|t| t as usize), scalar);
-    if let Some(b) = spinner {
+    // The rows go to the file a chunk at a time, as they come: memory does not grow with N.
+    let file = output::AtomicFile::new(&out)?;
+    let mut rows = sweep::CsvRows::new(file.create()?, &scene, (&spec, steps, h), shard, &out);
+    let ran = sweep::run(
+        &scene,
+        shard,
+        threads.map(|t| t as usize),
+        scalar,
+        &mut rows,
+        bar.as_ref(),
+    );
+    if let Some(b) = bar {
         b.finish_and_clear();
     }
     let (result, spec2, wall) = ran?;
     debug_assert_eq!(spec, spec2);
-    let fp = sweep::fingerprint(&scene, &spec, steps, h, result.path.is_batched());
-    sweep::write(&out, &sweep::to_csv(&result, spec.count, shard, fp))?;
+    file.commit_writer(rows.into_inner())?;
 
-    let k = result.rows.len();
+    let k = result.members;
     say!("lie-sim sweep: {} ({})", scene.name, scene.source);
     say!("  system       {}", scene.system.kind());
     say!("  method       {}", scene.method);
@@ -976,6 +990,9 @@ fn cmd_sweep(
         say!("  casimir      max |C − C₀| = {c:.3e}");
     }
     say!("  summary      {} ({k} rows)", out.display());
+    if let Some(kib) = sweep::peak_resident_kib() {
+        say!("  peak memory  {:.1} MiB resident", kib as f64 / 1024.0);
+    }
     Ok(())
 }
 

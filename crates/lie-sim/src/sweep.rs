@@ -24,6 +24,10 @@
 //! `integrators::ensemble::Summary::csv_header`: `index,status,steps,time,mu_0,…,mu_{d−1},
 //! initial_energy,max_energy_error,max_casimir_error`; then one row per member in index order,
 //! floats in shortest round-trip form. Read it with e.g. `pandas.read_csv(path, comment="#")`.
+//!
+//! **Memory.** The members go through in chunks of [`CHUNK`]: a chunk is drawn, stepped and its
+//! rows written ([`CsvRows`], a [`Sink`]) before the next is drawn, so that a sweep holds one
+//! chunk whatever N.
 
 use crate::batched::Plan;
 use crate::error::SimError;
@@ -39,19 +43,18 @@ use integrators::ensemble::{
 };
 use integrators::{IntegratorError, System as _};
 use lie_groups::Vector;
+use nalgebra::Vector3;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 /// The prefix of the first line of a sweep CSV.
 pub const MAGIC: &str = "# lie-sim sweep: ";
 
-/// What one sweep (or shard of one) produced.
+/// What one sweep (or shard of one) produced, besides its rows (which went to a [`Sink`]).
 #[derive(Debug, Clone)]
 pub struct SweepOutput {
-    /// The CSV header (no newline).
-    pub header: String,
-    /// One row per member of the shard, in index order (no newlines).
-    pub rows: Vec<String>,
+    /// The members of the shard (rows written).
+    pub members: usize,
     /// Members whose trajectory took every step.
     pub completed: usize,
     /// The largest `max_energy_error` over the completed members.
@@ -62,6 +65,170 @@ pub struct SweepOutput {
     pub first_failure: Option<String>,
     /// How the members were stepped.
     pub path: SweepPath,
+}
+
+/// Where a sweep's member summaries go: [`Sink::begin`] once the path is known, then
+/// [`Sink::take`] with the members in index order, [`CHUNK`] at a time, so that nothing of the
+/// sweep is kept that grows with N.
+pub trait Sink: Send {
+    /// Before the first chunk: the path the members take and the algebra's dimension.
+    fn begin(&mut self, path: &SweepPath, dim: usize) -> Result<(), SimError>;
+    /// The next members' summaries, in index order (`Execution::Parallel`: on the current rayon
+    /// pool, which the sink may use as long as the order it writes in stays the index order).
+    fn take<A: Vector>(
+        &mut self,
+        chunk: &[Summary<A>],
+        dim: usize,
+        execution: Execution,
+    ) -> Result<(), SimError>;
+}
+
+/// Members per chunk: the batch's state, the summaries and the rows of a chunk are all that a
+/// sweep holds, whatever N.
+pub const CHUNK: usize = 1 << 16;
+
+/// Rows formatted per task when a chunk is formatted on the pool.
+const ROWS_PER_TASK: usize = 1024;
+
+/// The sweep CSV (module page), written as the chunks come.
+pub struct CsvRows<W> {
+    out: W,
+    /// The first line for the scalar and the batched path (the fingerprint holds the path).
+    magic: [String; 2],
+    buf: String,
+    /// The file the rows go to, named in write errors.
+    path: PathBuf,
+}
+
+impl<W: std::io::Write + Send> CsvRows<W> {
+    /// The CSV of `shard` of the scene's sweep (`plan`: its spec, steps and step), to `out`, the
+    /// file at `path`.
+    pub fn new(
+        out: W,
+        scene: &Scene,
+        (spec, steps, h): (&SweepSpec, usize, f64),
+        shard: Shard,
+        path: &Path,
+    ) -> Self {
+        let magic = |batched| {
+            magic_line(
+                spec.count,
+                shard,
+                fingerprint(scene, spec, steps, h, batched),
+            )
+        };
+        Self {
+            out,
+            magic: [magic(false), magic(true)],
+            buf: String::new(),
+            path: path.to_path_buf(),
+        }
+    }
+
+    /// The writer, once every chunk went through.
+    pub fn into_inner(self) -> W {
+        self.out
+    }
+
+    fn write(&mut self, bytes: &[u8]) -> Result<(), SimError> {
+        self.out.write_all(bytes).map_err(|source| SimError::Write {
+            path: self.path.clone(),
+            source,
+        })
+    }
+}
+
+impl<W: std::io::Write + Send> Sink for CsvRows<W> {
+    fn begin(&mut self, path: &SweepPath, dim: usize) -> Result<(), SimError> {
+        let magic = &self.magic[usize::from(path.is_batched())];
+        let head = format!("{magic}\n{}\n", Summary::<Vector3<f64>>::csv_header(dim));
+        self.write(head.as_bytes())
+    }
+
+    fn take<A: Vector>(
+        &mut self,
+        chunk: &[Summary<A>],
+        dim: usize,
+        execution: Execution,
+    ) -> Result<(), SimError> {
+        let rows = |part: &[Summary<A>], buf: &mut String| {
+            for s in part {
+                s.write_csv_row(dim, buf);
+                buf.push('\n');
+            }
+        };
+        match execution {
+            Execution::Sequential => {
+                self.buf.clear();
+                let mut buf = std::mem::take(&mut self.buf);
+                rows(chunk, &mut buf);
+                let written = self.write(buf.as_bytes());
+                self.buf = buf;
+                written
+            }
+            Execution::Parallel => {
+                use rayon::prelude::*;
+                // `collect` on an indexed parallel iterator keeps the order of the parts.
+                let parts: Vec<String> = chunk
+                    .par_chunks(ROWS_PER_TASK)
+                    .map(|part| {
+                        let mut buf = String::with_capacity(160 * part.len());
+                        rows(part, &mut buf);
+                        buf
+                    })
+                    .collect();
+                parts.iter().try_for_each(|p| self.write(p.as_bytes()))
+            }
+        }
+    }
+}
+
+/// The statistics of [`SweepOutput`], folded over the chunks.
+#[derive(Debug, Default)]
+struct Tally {
+    members: usize,
+    completed: usize,
+    max_energy_error: f64,
+    max_casimir_error: Option<f64>,
+    first_failure: Option<String>,
+}
+
+impl Tally {
+    fn fold<A>(&mut self, chunk: &[Summary<A>]) {
+        use integrators::ensemble::Status;
+        self.members += chunk.len();
+        for s in chunk {
+            match &s.status {
+                Status::Completed => {
+                    self.completed += 1;
+                    self.max_energy_error = self.max_energy_error.max(s.max_energy_error);
+                    if let Some(c) = s.max_casimir_error {
+                        self.max_casimir_error =
+                            Some(self.max_casimir_error.map_or(c, |m| m.max(c)));
+                    }
+                }
+                Status::StepFailed { step, error } => {
+                    self.first_failure
+                        .get_or_insert_with(|| format!("member {}: step {step}: {error}", s.index));
+                }
+                Status::BuildFailed(e) => {
+                    self.first_failure
+                        .get_or_insert_with(|| format!("member {}: {e}", s.index));
+                }
+            }
+        }
+    }
+
+    fn output(self, path: SweepPath) -> SweepOutput {
+        SweepOutput {
+            members: self.members,
+            completed: self.completed,
+            max_energy_error: self.max_energy_error,
+            max_casimir_error: self.max_casimir_error,
+            first_failure: self.first_failure,
+            path,
+        }
+    }
 }
 
 /// How a sweep's members were stepped (`crate::batched`).
@@ -90,8 +257,9 @@ impl std::fmt::Display for SweepPath {
     }
 }
 
-/// The [`Job`] of a sweep: draws the members around μ₀ and runs one shard of the ensemble.
-struct SweepJob<'a> {
+/// The [`Job`] of a sweep: draws the members around μ₀ and runs one shard of the ensemble, a
+/// chunk at a time, into a [`Sink`].
+struct SweepJob<'a, K> {
     spec: SweepSpec,
     h: f64,
     steps: usize,
@@ -101,11 +269,13 @@ struct SweepJob<'a> {
     solver: &'a SolverOptions,
     /// The scalar path even where a batched one exists (`--scalar`).
     scalar: bool,
+    sink: &'a mut K,
+    progress: Option<&'a indicatif::ProgressBar>,
     /// `<kind> with <method>`, for errors.
     what: String,
 }
 
-impl Job for SweepJob<'_> {
+impl<K: Sink> Job for SweepJob<'_, K> {
     type Out = SweepOutput;
     fn run<M: Model>(
         self,
@@ -113,49 +283,47 @@ impl Job for SweepJob<'_> {
         mu0: Alg<M::G>,
         g0: Option<M::G>,
     ) -> Result<SweepOutput, SimError> {
-        let what = self.what.clone();
-        self.members(model, mu0, g0).map_err(|e| SimError::Build {
-            what,
-            message: e.to_string(),
-        })
+        self.members(model, mu0, g0)
     }
 }
 
-impl SweepJob<'_> {
+/// Runs `f` sequentially on this thread, or on `pool`.
+fn on<R: Send>(pool: Option<&rayon::ThreadPool>, f: impl FnOnce(Execution) -> R + Send) -> R {
+    match pool {
+        None => f(Execution::Sequential),
+        Some(pool) => pool.install(|| f(Execution::Parallel)),
+    }
+}
+
+impl<K: Sink> SweepJob<'_, K> {
     fn members<M: Model>(
         self,
         model: &M,
         mu0: Alg<M::G>,
         g0: Option<M::G>,
-    ) -> Result<SweepOutput, IntegratorError> {
+    ) -> Result<SweepOutput, SimError> {
         type G<M> = <M as Model>::G;
+        let what = self.what.clone();
+        let failed = |e: IntegratorError| SimError::Build {
+            what: what.clone(),
+            message: e.to_string(),
+        };
         let system = model.system();
         let config = self.solver.config();
         let dim = <G<M> as lie_groups::LieGroup>::dim();
         let (n, seed) = (self.spec.count, self.spec.seed);
-        // Only this shard's members are drawn (each from (seed, index) alone), so a shard costs
-        // in proportion to its size whatever N is.
-        let indices = self.shard.indices(n);
-        let members: Vec<Alg<G<M>>> = match self.spec.kind {
-            SweepKind::MomentaOnSphere => {
-                let radius = mu0.norm();
-                if radius == 0.0 {
-                    return Err(IntegratorError::InvalidParameter {
-                        reason: "momenta-on-sphere around μ₀ = 0: the sphere |μ| = |μ₀| is a point"
-                            .into(),
-                    });
-                }
-                indices
-                    .iter()
-                    .map(|&i| sphere_point(dim, radius, seed, i as u64))
-                    .collect::<Result<_, _>>()?
-            }
+        // Member i is drawn from (seed, i) alone, so a chunk draws only its own members and a
+        // shard costs in proportion to its size whatever N is.
+        let (radius, e0) = (mu0.norm(), system.hamiltonian(&mu0));
+        if self.spec.kind == SweepKind::MomentaOnSphere && radius == 0.0 {
+            return Err(failed(IntegratorError::InvalidParameter {
+                reason: "momenta-on-sphere around μ₀ = 0: the sphere |μ| = |μ₀| is a point".into(),
+            }));
+        }
+        let draw = |i: usize| match self.spec.kind {
+            SweepKind::MomentaOnSphere => sphere_point(dim, radius, seed, i as u64),
             SweepKind::MomentaOnEnergyLevel => {
-                let e0 = system.hamiltonian(&mu0);
-                indices
-                    .iter()
-                    .map(|&i| energy_level_point::<G<M>, M::S>(system, e0, seed, i as u64))
-                    .collect::<Result<_, _>>()?
+                energy_level_point::<G<M>, M::S>(system, e0, seed, i as u64)
             }
         };
         let plan = if self.scalar {
@@ -163,31 +331,12 @@ impl SweepJob<'_> {
         } else {
             Plan::new(self.method, model, g0.as_ref())
         };
-        let why_scalar = match plan {
-            Ok(plan) => {
-                let run = |execution| {
-                    plan.run(
-                        &members,
-                        &indices,
-                        self.h,
-                        self.steps,
-                        self.spec.monitor_every,
-                        execution,
-                    )
-                };
-                let summaries = match self.pool {
-                    None => run(Execution::Sequential),
-                    Some(pool) => pool.install(|| run(Execution::Parallel)),
-                }
-                .map_err(|e| IntegratorError::InvalidParameter {
-                    reason: format!("batched sweep: {e}"),
-                })?;
-                return Ok(output(&summaries, dim, SweepPath::Batched(plan.level())));
-            }
-            Err(missing) => missing.0,
+        let path = match &plan {
+            Ok(plan) => SweepPath::Batched(plan.level()),
+            Err(missing) => SweepPath::Scalar(missing.0.clone()),
         };
-        let ensemble =
-            Ensemble::new(members, self.h, self.steps)?.monitor_every(self.spec.monitor_every);
+        let sink = self.sink;
+        sink.begin(&path, dim)?;
         let method = self.method;
         let build = |_i: usize, mu: &Alg<G<M>>| {
             build_method(method, &config, model, mu.clone(), g0.clone()).map_err(|e| match e {
@@ -197,47 +346,71 @@ impl SweepJob<'_> {
                 },
             })
         };
-        let mut summaries: Vec<Summary<Alg<G<M>>>> = match self.pool {
-            None => ensemble.run_shard(Shard::all(), Execution::Sequential, &build),
-            Some(pool) => {
-                pool.install(|| ensemble.run_shard(Shard::all(), Execution::Parallel, &build))
+        let mut tally = Tally::default();
+        let mut all = self.shard.iter(n);
+        loop {
+            let indices: Vec<usize> = all.by_ref().take(CHUNK).collect();
+            if indices.is_empty() {
+                break;
             }
-        };
-        // The ensemble numbered the shard's members from 0: give them their sweep indices.
-        for (summary, &index) in summaries.iter_mut().zip(&indices) {
-            summary.index = index;
+            let members: Vec<Alg<G<M>>> = on(self.pool, |execution| match execution {
+                Execution::Sequential => indices.iter().map(|&i| draw(i)).collect::<Result<_, _>>(),
+                Execution::Parallel => {
+                    use rayon::prelude::*;
+                    indices.par_iter().map(|&i| draw(i)).collect()
+                }
+            })
+            .map_err(&failed)?;
+            match &plan {
+                Ok(plan) => {
+                    let summaries = on(self.pool, |execution| {
+                        plan.run(
+                            &members,
+                            &indices,
+                            self.h,
+                            self.steps,
+                            self.spec.monitor_every,
+                            execution,
+                        )
+                    })
+                    .map_err(|e| {
+                        failed(IntegratorError::InvalidParameter {
+                            reason: format!("batched sweep: {e}"),
+                        })
+                    })?;
+                    tally.fold(&summaries);
+                    on(self.pool, |execution| sink.take(&summaries, dim, execution))?;
+                }
+                Err(_) => {
+                    let ensemble = Ensemble::new(members, self.h, self.steps)
+                        .map_err(&failed)?
+                        .monitor_every(self.spec.monitor_every);
+                    let mut summaries: Vec<Summary<Alg<G<M>>>> = on(self.pool, |execution| {
+                        ensemble.run_shard(Shard::all(), execution, &build)
+                    });
+                    // The ensemble numbered the chunk's members from 0: give them their sweep
+                    // indices.
+                    for (summary, &index) in summaries.iter_mut().zip(&indices) {
+                        summary.index = index;
+                    }
+                    tally.fold(&summaries);
+                    on(self.pool, |execution| sink.take(&summaries, dim, execution))?;
+                }
+            }
+            if let Some(bar) = self.progress {
+                bar.inc(indices.len() as u64);
+            }
         }
-        Ok(output(&summaries, dim, SweepPath::Scalar(why_scalar)))
+        Ok(tally.output(path))
     }
 }
 
-/// The output of a shard from its members' summaries.
-fn output<A: Vector>(summaries: &[Summary<A>], dim: usize, path: SweepPath) -> SweepOutput {
-    let completed: Vec<&Summary<A>> = summaries
-        .iter()
-        .filter(|s| s.status.is_completed())
-        .collect();
-    let first_failure = summaries.iter().find_map(|s| match &s.status {
-        integrators::ensemble::Status::Completed => None,
-        integrators::ensemble::Status::StepFailed { step, error } => {
-            Some(format!("member {}: step {step}: {error}", s.index))
-        }
-        integrators::ensemble::Status::BuildFailed(e) => Some(format!("member {}: {e}", s.index)),
-    });
-    SweepOutput {
-        header: Summary::<A>::csv_header(dim),
-        rows: summaries.iter().map(|s| s.csv_row(dim)).collect(),
-        completed: completed.len(),
-        max_energy_error: completed
-            .iter()
-            .fold(0.0f64, |m, s| m.max(s.max_energy_error)),
-        max_casimir_error: completed
-            .iter()
-            .filter_map(|s| s.max_casimir_error)
-            .reduce(f64::max),
-        first_failure,
-        path,
-    }
+/// The process's peak resident memory so far, in KiB (Linux: `VmHWM` of `/proc/self/status`;
+/// `None` elsewhere), so that a sweep shows that its memory does not grow with N.
+pub fn peak_resident_kib() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find_map(|l| l.strip_prefix("VmHWM:"))?;
+    line.trim().strip_suffix("kB")?.trim().parse().ok()
 }
 
 /// The work of one shard of a sweep before it starts: its members × the steps of each (a
@@ -319,12 +492,15 @@ pub fn magic_line(members: usize, shard: Shard, fingerprint: u64) -> String {
 }
 
 /// Runs `shard` of the scene's sweep on `threads` threads (1: sequentially on this thread; `None`:
-/// rayon's default, one per core).
-pub fn run(
+/// rayon's default, one per core), its members' summaries going to `sink` a chunk at a time;
+/// `progress` counts the members done.
+pub fn run<K: Sink>(
     scene: &Scene,
     shard: Shard,
     threads: Option<usize>,
     scalar: bool,
+    sink: &mut K,
+    progress: Option<&indicatif::ProgressBar>,
 ) -> Result<(SweepOutput, SweepSpec, Duration), SimError> {
     let (spec, steps, h) = plan(scene)?;
     let pool = match threads {
@@ -347,24 +523,13 @@ pub fn run(
         method: &scene.method,
         solver: &scene.solver,
         scalar,
+        sink,
+        progress,
         what: format!("{} with {}", scene.system.kind(), scene.method),
     };
     let start = Instant::now();
     let out = scene.system.dispatch(scene.reconstruct, job)?;
     Ok((out, spec, start.elapsed()))
-}
-
-/// The CSV text of a sweep (or shard) output.
-pub fn to_csv(out: &SweepOutput, members: usize, shard: Shard, fingerprint: u64) -> String {
-    let mut s = magic_line(members, shard, fingerprint);
-    s.push('\n');
-    s.push_str(&out.header);
-    s.push('\n');
-    for r in &out.rows {
-        s.push_str(r);
-        s.push('\n');
-    }
-    s
 }
 
 /// A shard file read back.

@@ -258,3 +258,73 @@ fn csv_rows_match_the_header() {
         }
     }
 }
+
+/// `push_exp` (ryu's digits in the `{:e}` form) writes what `format!("{x:e}")` writes, byte for
+/// byte: on 2·10⁶ random bit patterns (every exponent, subnormals included), on the integers and
+/// on both neighbours of every power of ten, on ±0, the extremes, NaN and ±∞.
+#[test]
+fn push_exp_writes_what_format_e_writes() {
+    use integrators::ensemble::push_exp;
+    let check = |x: f64| {
+        let mut s = String::from("prefix,");
+        push_exp(&mut s, x);
+        assert_eq!(s, format!("prefix,{x:e}"), "bits {:#018x}", x.to_bits());
+    };
+    // SplitMix64: the bit patterns, reproducibly.
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    for _ in 0..2_000_000 {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        check(f64::from_bits(z ^ (z >> 31)));
+    }
+    for i in -1000..=1000 {
+        check(f64::from(i));
+        check(f64::from(i) / 8.0);
+    }
+    // Exact ties between two shortest decimals (1000000000000000.25 lies halfway between …0.2
+    // and …0.3, both within half an ulp), where ryu's choice is not the standard library's.
+    for k in 0..1000 {
+        for f in [0.25, 0.75] {
+            check(1e15 + f64::from(k) + f);
+        }
+    }
+    check(f64::from_bits(0x4312_9879_088f_f039));
+    check(f64::from_bits(0x42b6_7d63_6afc_0b90));
+    // Every exponent from 2⁴⁵ to 2⁵⁸, where ties are densest.
+    for e in 45..58 {
+        for k in 0..2000u64 {
+            let fraction = k.wrapping_mul(0x0000_5a5a_5a5a_5a5b) & ((1 << 52) - 1);
+            let x = f64::from_bits(((1023 + e) << 52) | fraction);
+            check(x);
+            check(-x);
+        }
+    }
+    for e in -324..=308 {
+        let p: f64 = format!("1e{e}").parse().unwrap();
+        for x in [
+            p,
+            f64::from_bits(p.to_bits() + 1),
+            f64::from_bits(p.to_bits().max(1) - 1),
+        ] {
+            check(x);
+            check(-x);
+        }
+    }
+    for x in [
+        0.0,
+        -0.0,
+        f64::MIN_POSITIVE,
+        f64::MAX,
+        f64::MIN,
+        f64::EPSILON,
+        f64::from_bits(1),
+        3.179e-6,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    ] {
+        check(x);
+    }
+}
