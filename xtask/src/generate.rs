@@ -126,6 +126,7 @@ fn trade_table(t: &registry::Trade, rows: &[trade::Row], part: TradePart) -> Opt
         TradePart::Summary { exclude } => Some(trade::summary(rows, t.metric, t.targets, exclude)),
         TradePart::Families => Some(trade::families(rows, t.metric, t.targets)),
         TradePart::Tau { theta } => Some(trade::tau(rows, theta)),
+        TradePart::Steppers { targets } => Some(trade::steppers(rows, t.metric, targets)),
     }
 }
 

@@ -70,6 +70,10 @@ pub enum TradePart {
     Families,
     /// Plain Lie–Poisson τ = exp against Cayley at θ, step by step.
     Tau { theta: &'static str },
+    /// The cheapest geometric run on fixed steps, baseline run to a tolerance and run with
+    /// reversible steps per target (its own `targets`: those of issue #27 among them), and their
+    /// cost ratios.
+    Steppers { targets: &'static [f64] },
 }
 
 pub struct Bench {
@@ -811,14 +815,42 @@ pub fn all() -> Vec<Generator> {
             "coupled-bodies-run",
             "coupled-bodies",
         ),
-        vehicle!(
-            "trade-eccentric-orbit",
-            "docs/trade-eccentric-orbit.csv",
-            &["examples/scenes/eccentric-orbit.toml"],
-            "3 min",
-            "eccentric-orbit-run",
-            "eccentric-orbit",
-        ),
+        Generator {
+            name: "trade-eccentric-orbit",
+            about: "a vehicle scene's trade on its automatic ladder",
+            takes: "3 min",
+            how: How::Trade(Trade {
+                csv: "docs/trade-eccentric-orbit.csv",
+                args: &["examples/scenes/eccentric-orbit.toml"],
+                metric: "error",
+                targets: ERROR_TARGETS,
+                parts: &[
+                    (
+                        At {
+                            file: WP,
+                            part: "eccentric-orbit-run",
+                        },
+                        TradePart::Run,
+                    ),
+                    (
+                        At {
+                            file: WP,
+                            part: "eccentric-orbit",
+                        },
+                        TradePart::Summary { exclude: &[] },
+                    ),
+                    (
+                        At {
+                            file: WP,
+                            part: "eccentric-orbit-steppers",
+                        },
+                        TradePart::Steppers {
+                            targets: &[1e-4, 1e-6, 1e-8, 1e-9, 1e-10],
+                        },
+                    ),
+                ],
+            }),
+        },
         Generator {
             name: "choose-examples",
             about: "`lie-sim choose` on the free body and the fast heavy top",

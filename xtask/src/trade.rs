@@ -195,6 +195,44 @@ pub fn summary(rows: &[Row], metric: &str, targets: &[f64], exclude: &[&str]) ->
     out
 }
 
+/// | metric ≤ | fixed steps, geometric | to a tolerance, baseline | reversible steps | reversible /
+/// fixed | reversible / tolerance |: the cheapest run of each kind of stepping meeting each target
+/// and the cost ratios of issue #27's variable-step targets (the cheapest reversible run against
+/// the cheapest geometric run on fixed steps, and against the cheapest baseline run to a
+/// tolerance).
+pub fn steppers(rows: &[Row], metric: &str, targets: &[f64]) -> String {
+    let mut out = format!(
+        "| {metric} ≤ | fixed steps, geometric | to a tolerance, baseline | reversible steps | \
+         reversible / fixed | reversible / tolerance |\n|---|---|---|---|---|---|\n"
+    );
+    let show = |r: Option<&Row>| match r {
+        Some(r) => format!("{}: {}", r.label(), micros(r.seconds())),
+        None => "none in the ladder".into(),
+    };
+    let ratio = |a: Option<&Row>, b: Option<&Row>| match (a, b) {
+        (Some(a), Some(b)) => g3(a.seconds() / b.seconds()),
+        _ => "—".into(),
+    };
+    for &t in targets {
+        let ok = || rows.iter().filter(|r| r.meets(metric, t));
+        let fixed = cheapest(
+            ok().filter(|r| !r.is_baseline() && r.tolerance().is_none() && r.epsilon().is_none()),
+        );
+        let tolerance = cheapest(ok().filter(|r| r.is_baseline() && r.tolerance().is_some()));
+        let reversible = cheapest(ok().filter(|r| r.epsilon().is_some()));
+        out.push_str(&format!(
+            "| {} | {} | {} | {} | {} | {} |\n",
+            target_label(t),
+            show(fixed),
+            show(tolerance),
+            show(reversible),
+            ratio(reversible, fixed),
+            ratio(reversible, tolerance)
+        ));
+    }
+    out
+}
+
 /// The families of the per-family table; a method no family names falls into the last.
 pub const FAMILIES: &[(&str, &[&str])] = &[
     ("RK4 / RKMK4", &["rk4", "rkmk4"]),
@@ -323,6 +361,26 @@ euler-poincare,exp,1,-,0.4,0,NaN,NaN,,failed,1e-14,NaN,,,step 5: no convergence;
         let s = summary(&rows, "error", &[1e-4], &["exact"]);
         assert!(
             s.contains("| 1e-04 | rk4, h = 0.4: 1.0 µs | none in the ladder | — |"),
+            "{s}"
+        );
+    }
+
+    #[test]
+    fn the_steppers_table_sets_reversible_steps_against_fixed_steps_and_tolerances() {
+        let csv = "method,tau,theta,composition,tolerance,h,steps,ns_per_step,seconds,error,error_status,reference_error,max_energy_error,max_casimir_error,max_momentum_map_error,geometric,failure,epsilon
+splitting,-,-,-,,0.1,100,40,8.0e-6,1e-7,measured,1e-14,1e-4,,,true,,
+splitting,-,-,-,,0.2,50,40,4.0e-6,1e-5,measured,1e-14,1e-4,,,true,,
+dop853,-,-,-,1e-9,0.3,30,100,3.0e-6,1e-7,measured,1e-14,1e-4,,,false,,
+rk4,-,-,-,,0.3,30,100,1.0e-6,1e-7,measured,1e-14,1e-4,,,false,,
+splitting,-,-,-,,0.25,40,40,1.5e-6,1e-7,measured,1e-14,1e-4,,,true,,0.5
+splitting,-,-,-,,0.5,20,40,0.5e-6,1e-3,measured,1e-14,1e-4,,,true,,1
+";
+        let rows = parse(csv).unwrap();
+        let s = steppers(&rows, "error", &[1e-6]);
+        // The fixed-step baseline (rk4, cheaper still) is in neither column; the reversible run
+        // at ε = 1 misses the target.
+        assert!(
+            s.contains("| 1e-06 | splitting, h = 0.1: 8.0 µs | dop853, tolerance = 1e-9: 3.0 µs | splitting, reversible steps ε = 0.5: 1.5 µs | 0.188 | 0.5 |"),
             "{s}"
         );
     }

@@ -90,6 +90,19 @@ pub fn step_density(system: &System, reconstruct: bool) -> Result<f64, SimError>
     system.dispatch(reconstruct, Density)
 }
 
+/// The scale s of the ε that `trade` and `choose` run reversible steps with at the level of step
+/// h of their ladder, ε = h s, with `s = max(ρ(y₀), ω)`: ρ the step density at the initial state
+/// ([`step_density`]) and ω the scene's time scale ([`characteristic_rate`]) that sets the
+/// ladder (its coarsest step has hω = 1). Where ρ(y₀) ≥ ω (the provided density, |∂h/∂μ| plus
+/// the potential's frequency), each reversible run starts with the ladder's step h. Where a
+/// model's density leaves out a rate its steps need not resolve (a satellite's spin about Π,
+/// `mechanics::RigidBodySe3`), ρ(y₀) may be far below ω, and ε = hρ(y₀) would start the
+/// ε-ladder where even the coarsest run is finer than the fixed ladder's finest; ε = hω keeps
+/// it the same dimensionless ladder, ε = 1, ½, ¼, … from its top.
+pub fn epsilon_scale(system: &System, reconstruct: bool) -> Result<f64, SimError> {
+    Ok(step_density(system, reconstruct)?.max(characteristic_rate(system, reconstruct)?))
+}
+
 /// The refusal of `method` on a system of `kind` as an error of the run.
 pub fn refusal(kind: SystemKind, method: &MethodSpec, e: BuildError) -> SimError {
     let what = format!("{kind} with {method}");

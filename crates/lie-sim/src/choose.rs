@@ -27,7 +27,7 @@
 //! and measured error. When nothing meets the target within the budget, it says so, with the best
 //! value reached.
 
-use crate::build::{build, build_with, step_density};
+use crate::build::{build, build_with, epsilon_scale};
 use crate::error::SimError;
 use crate::invariants::relative_error;
 use crate::measure::{timed_adaptive_run, timed_run};
@@ -147,8 +147,9 @@ pub fn choose(
         None => value <= target,
     };
     let methods = candidates();
-    // Reversible steps run with ε = h ρ(y₀) at the level of step h: they start with that step.
-    let rho0 = step_density(&scene.system, scene.reconstruct)?;
+    // Reversible steps run with ε = h s at the level of step h (`epsilon_scale`): they start
+    // with that step where ρ(y₀) sets s.
+    let scale = epsilon_scale(&scene.system, scene.reconstruct)?;
     let mut done = vec![false; methods.len()];
     let mut rows: Vec<Candidate> = Vec::new();
     let mut truncated = false;
@@ -171,7 +172,7 @@ pub fn choose(
                 };
                 Some(VariableSteps::Tolerance(t))
             } else if m.reversible {
-                Some(VariableSteps::Reversible(h * rho0))
+                Some(VariableSteps::Reversible(h * scale))
             } else {
                 None
             };

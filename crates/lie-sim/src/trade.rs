@@ -31,13 +31,14 @@
 //!
 //! The configurations a row declares for reversible variable steps (`Trade::reversible`: a
 //! symmetric method steered by the step-density controller, `integrator.epsilon`) run over the
-//! ladder ε = h ρ(y₀) of the steps (ρ the model's step density at the initial state, so that
-//! each starts with the ladder's step h and then follows the motion); their `h` is the mean step
-//! T/steps and their `epsilon` the ε asked for.
+//! ladder ε = h s of the steps, `s = max(ρ(y₀), ω)` ([`crate::build::epsilon_scale`]: ρ the
+//! model's step density at the initial state, ω the scene's time scale that sets the ladder, so
+//! that each starts with the ladder's step h where ρ(y₀) ≥ ω, and then follows the motion);
+//! their `h` is the mean step T/steps and their `epsilon` the ε asked for.
 //!
 //! Error at T and timing: [`crate::measure`]; nothing of the trajectory is stored.
 
-use crate::build::{build, build_with, step_density};
+use crate::build::{build, build_with, epsilon_scale};
 use crate::error::SimError;
 use crate::measure::{timed_adaptive_run, timed_run, Timed};
 use crate::methods::row::Stepping;
@@ -79,14 +80,14 @@ enum Run {
     Epsilon(f64),
 }
 
-/// The runs of a method in the trade: [`TOLERANCES`] for a tolerance-driven method, ε = h ρ₀
-/// over the ladder for reversible steps (ρ₀ the step density at the initial state), the steps
-/// of [`steps_of`] otherwise.
-fn runs_of(m: &MethodSpec, ladder: &[f64], duration: f64, rho0: f64) -> Vec<Run> {
+/// The runs of a method in the trade: [`TOLERANCES`] for a tolerance-driven method, ε = h s
+/// over the ladder for reversible steps (s of [`epsilon_scale`]), the steps of [`steps_of`]
+/// otherwise.
+fn runs_of(m: &MethodSpec, ladder: &[f64], duration: f64, scale: f64) -> Vec<Run> {
     if tolerance_driven(m) {
         TOLERANCES.iter().map(|&t| Run::Tolerance(t)).collect()
     } else if m.reversible {
-        ladder.iter().map(|&h| Run::Epsilon(h * rho0)).collect()
+        ladder.iter().map(|&h| Run::Epsilon(h * scale)).collect()
     } else {
         steps_of(m, ladder, duration)
             .into_iter()
@@ -222,9 +223,9 @@ pub fn trade(
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     let mut inapplicable = Vec::new();
-    let rho0 = step_density(&scene.system, scene.reconstruct)?;
+    let scale = epsilon_scale(&scene.system, scene.reconstruct)?;
     for m in candidates() {
-        for run in runs_of(&m, ladder, scene.duration, rho0) {
+        for run in runs_of(&m, ladder, scene.duration, scale) {
             let variable = match run {
                 Run::Step(_) => None,
                 Run::Tolerance(t) => Some(VariableSteps::Tolerance(

@@ -41,8 +41,9 @@
 //! maps a method keeps step by step it keeps with any step sequence.
 //!
 //! **The density.** [`System::step_density`] gives ρ (the provided form from the body's velocity
-//! |∂h/∂μ| and the potential's frequency; a model overrides it, e.g. √(|Ω|² + GM/r³) for a
-//! satellite on an orbit) and [`System::step_density_rate`] gives G (the provided form by central
+//! |∂h/∂μ| and the potential's frequency; a model overrides it, e.g. √(|Π × Ω|²/|Π|² + GM/r³)
+//! for a satellite on an orbit, which leaves out the spin about Π that its methods follow
+//! exactly) and [`System::step_density_rate`] gives G (the provided form by central
 //! differences of ρ along the flow; a model gives the closed form). Any system can be the
 //! monitor, so a user chooses the density by wrapping the model. ε is the accuracy knob: ε/ρ is
 //! the step where ρ is the rate, and the error of an order-p method falls as ε^p.

@@ -371,10 +371,11 @@ pub fn style(m: &MethodSpec) -> SeriesStyle {
     }
     if m.reversible {
         // Reversible variable steps: + in the method's colour, bold for the base method and
-        // thin for a composition of it.
+        // thin for a composition of it, dashed (solid for the second of a pair) from order 8.
+        let high = m.composition.as_ref().is_some_and(|c| c.order() >= 8);
         return SeriesStyle {
             color: family(m).color,
-            dashed: second,
+            dashed: second != high,
             marker: Marker::Plus,
             filled: m.composition.is_none(),
         };

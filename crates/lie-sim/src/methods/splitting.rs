@@ -31,8 +31,9 @@ pub const ROW: Row = Row {
         modified: &[],
         processing: true,
         one_step: false,
-        // The base and an order-6 composition: where variable steps pay, both orders' cost.
-        reversible: &[None, Some("kahan-li-6")],
+        // The base and its order-6 and order-8 compositions: where variable steps pay, the
+        // cost of each order (on the eccentric orbit, order 8 is the cheapest from 1e-9 on).
+        reversible: &[None, Some("kahan-li-6"), Some("kahan-li-8")],
     },
     family,
     second: false,
