@@ -7,8 +7,6 @@
 //! refused, not started.
 
 use crate::error::SimError;
-use crate::methods::spec::SolverOptions;
-use crate::scene::Scene;
 
 /// Steps a command takes without `--allow-large`: 10⁹ (minutes at the cost of a typical step).
 pub const MAX_STEPS: u128 = 1_000_000_000;
@@ -41,32 +39,6 @@ pub fn stage_cost(algebra_dim: usize, matrix_side: Option<usize>, newton: bool) 
     let newton_flops = if newton { d.pow(3) / 3 } else { 0 };
     let flops = m.pow(3).max(d.pow(2)) + newton_flops;
     (flops / FLOPS_PER_UNIT).max(1)
-}
-
-/// The cost of a step of the built simulation `sim` relative to one on SO(3) ([`stage_cost`]): its
-/// group's sizes, with a Newton matrix when it is implicit and `solver` is not fixed-point.
-pub fn step_cost(sim: &dyn crate::sim::Simulation, solver: &SolverOptions) -> u128 {
-    let newton = !sim.info().explicit && !fixed_point(solver);
-    stage_cost(sim.momentum_dim(), sim.group_side(), newton)
-}
-
-/// The cost of a step of the scene's own method on its system ([`step_cost`]), the simulation
-/// built once to read the group's sizes; `implicit`: counted as implicit whatever the method (an
-/// upper figure for `trade`, whose candidates include implicit methods).
-pub fn scene_step_cost(scene: &Scene, implicit: bool) -> Result<u128, SimError> {
-    let sim = crate::build::build(
-        &scene.system,
-        &scene.method,
-        scene.reconstruct,
-        &scene.solver,
-    )?;
-    let newton = (implicit || !sim.info().explicit) && !fixed_point(&scene.solver);
-    Ok(stage_cost(sim.momentum_dim(), sim.group_side(), newton))
-}
-
-/// Whether the solver iterates without a Jacobian.
-fn fixed_point(solver: &SolverOptions) -> bool {
-    matches!(solver.config().kind, integrators::SolverKind::FixedPoint)
 }
 
 /// What a command is about to do.

@@ -226,3 +226,15 @@ impl Job for Rate {
         Ok(model.system().characteristic_rate(&mu0, g0.as_ref()))
     }
 }
+
+/// The cost of a step of the built simulation `sim` relative to one on SO(3) ([`crate::bounds::stage_cost`]): its
+/// group's sizes, with a Newton matrix when it is implicit and `solver` is not fixed-point.
+pub fn step_cost(sim: &dyn crate::sim::Simulation, solver: &SolverOptions) -> u128 {
+    let newton = !sim.info().explicit && !fixed_point(solver);
+    crate::bounds::stage_cost(sim.momentum_dim(), sim.group_side(), newton)
+}
+
+/// Whether the solver iterates without a Jacobian.
+pub fn fixed_point(solver: &SolverOptions) -> bool {
+    matches!(solver.config().kind, integrators::SolverKind::FixedPoint)
+}

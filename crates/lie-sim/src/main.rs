@@ -44,8 +44,8 @@ use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use integrators::ensemble::Shard;
 use lie_sim::error::SimError;
 use lie_sim::{
-    bounds, choose, input, ladder, listing, methods, output, plot, reference, run, scene, stepping,
-    sweep, trade,
+    choose, input, ladder, listing, methods, output, plot, reference, run, scene, stepping, sweep,
+    trade,
 };
 use scene::{Overrides, Scene};
 use std::io::IsTerminal;
@@ -921,7 +921,7 @@ fn cmd_sweep(
     });
     output::refuse_clobbering(&[&out], &[scene_path])?;
     let (spec, steps, h) = sweep::plan(&scene)?;
-    let cost = bounds::scene_step_cost(&scene, false)?;
+    let cost = scene.step_cost(false)?;
     sweep::estimate(&spec, shard, steps, scene.method.stages(), cost)
         .check("sweep", overrides.allow_large)?;
     let members = shard.iter(spec.count).len();

@@ -383,6 +383,20 @@ fn read<T: DeserializeOwned>(text: &str, label: &str) -> Result<T, SimError> {
 }
 
 impl Scene {
+    /// The cost of a step of the scene's own method on its system relative to one on SO(3)
+    /// ([`crate::bounds::stage_cost`]), the simulation built once to read the group's sizes;
+    /// `implicit`: counted as implicit whatever the method (an upper figure for `trade`, whose
+    /// candidates include implicit methods).
+    pub fn step_cost(&self, implicit: bool) -> Result<u128, SimError> {
+        let sim = crate::build::build(&self.system, &self.method, self.reconstruct, &self.solver)?;
+        let newton = (implicit || !sim.info().explicit) && !crate::build::fixed_point(&self.solver);
+        Ok(crate::bounds::stage_cost(
+            sim.momentum_dim(),
+            sim.group_side(),
+            newton,
+        ))
+    }
+
     /// Reads and checks a scene file.
     pub fn load(path: &Path, overrides: Overrides) -> Result<Self, SimError> {
         let text = crate::input::read_text(path)?;

@@ -414,7 +414,7 @@ pub fn peak_resident_kib() -> Option<u64> {
 }
 
 /// The work of one shard of a sweep before it starts: its members × the steps of each (a
-/// composite step counts its stages), each at `step_cost` ([`crate::bounds::scene_step_cost`]),
+/// composite step counts its stages), each at `step_cost` ([`crate::scene::Scene::step_cost`]),
 /// and its rows of the summary CSV.
 pub fn estimate(
     spec: &SweepSpec,

@@ -113,7 +113,7 @@ fn steps_of(m: &MethodSpec, ladder: &[f64], duration: f64) -> Vec<f64> {
 /// by `--reference-budget` (and its first two runs, at h₀ = 1/ω and h₀/2, cost less than the
 /// ladder's coarsest level), nor are the tolerance-driven runs, whose steps are not known ahead
 /// (each is bounded by the driver's budget of attempted steps). A step costs what an implicit
-/// step on the scene's group costs ([`crate::bounds::scene_step_cost`]: an upper figure, the
+/// step on the scene's group costs ([`Scene::step_cost`](crate::scene::Scene::step_cost): an upper figure, the
 /// candidates include implicit methods), so that a trade on SO(50) is refused as `run` refuses
 /// it; a scene whose method does not build counts 1 (the trade reports that error itself).
 /// Bytes: the table.
@@ -130,7 +130,7 @@ pub fn estimate(scene: &Scene, ladder: &[f64], repeats: usize) -> crate::bounds:
             .saturating_mul(per_unit_h)
             .saturating_mul(repeats as u128),
         bytes: crate::bounds::Estimate::csv((candidates().len() * (ladder.len() + 1)) as u128, 15),
-        step_cost: crate::bounds::scene_step_cost(scene, true).unwrap_or(1),
+        step_cost: scene.step_cost(true).unwrap_or(1),
     }
 }
 
@@ -854,8 +854,8 @@ mod tests {
     fn a_trade_on_a_large_group_counts_its_step_cost() {
         let ladder = [0.01, 0.005];
         let (small, large) = (so_n_scene(3), so_n_scene(50));
-        assert_eq!(crate::bounds::scene_step_cost(&small, true).unwrap(), 1);
-        assert!(crate::bounds::scene_step_cost(&large, true).unwrap() > 100_000);
+        assert_eq!(small.step_cost(true).unwrap(), 1);
+        assert!(large.step_cost(true).unwrap() > 100_000);
         assert!(estimate(&small, &ladder, 1).check("trade", false).is_ok());
         let e = estimate(&large, &ladder, 1)
             .check("trade", false)
@@ -870,7 +870,7 @@ mod tests {
             monitor_every: 1,
         };
         let shard = integrators::ensemble::Shard::all();
-        let cost = |s: &Scene| crate::bounds::scene_step_cost(s, false).unwrap();
+        let cost = |s: &Scene| s.step_cost(false).unwrap();
         assert!(crate::sweep::estimate(&spec, shard, 1000, 1, cost(&small))
             .check("sweep", false)
             .is_ok());

@@ -71,7 +71,15 @@ fn explicit_steps_are_run_exactly() {
             "energy",
         ],
     );
-    let mut methods: Vec<String> = t.rows.iter().map(|r| r[..4].join(",")).collect();
+    // The configurations with a step or a tolerance (a configuration run only with reversible
+    // steps, such as Kahan–Li 8 ∘ splitting, runs its ε ladder: `reversible_steps`).
+    let epsilon = t.col("epsilon");
+    let mut methods: Vec<String> = t
+        .rows
+        .iter()
+        .filter(|r| r[epsilon].is_empty())
+        .map(|r| r[..4].join(","))
+        .collect();
     methods.dedup();
     assert!(methods.len() > 20, "{methods:?}");
     let (h, tolerance) = (t.col("h"), t.col("tolerance"));
