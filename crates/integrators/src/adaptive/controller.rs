@@ -14,8 +14,14 @@
 //! theoretic techniques for stepsize selection in explicit Runge–Kutta methods", ACM TOMS 17
 //! (1991); Hairer–Nørsett–Wanner, *Solving ODEs I*, §II.4 and §IV.2, and `dopri5.f`.)
 //!
-//! The controller holds the one number it remembers (`err_prev`) and nothing about the method,
-//! so any method with an error estimate can use it.
+//! The controller holds the one number it remembers (ln `err_prev`) and nothing about the method,
+//! so any method with an error estimate can use it. The factor is evaluated as
+//! `safety · exp(β ln err_prev − α ln err)`: one logarithm and one exponential per step, where two
+//! powers would cost about twice as much, which matters next to a step of a few hundred flops.
+
+/// ln 1e-4: the floor of the remembered error, so that one nearly exact step does not let the
+/// next grow by the largest factor (Hairer's `facold ≥ 1e-4`).
+const LN_ERR_FLOOR: f64 = -9.210_340_371_976_184;
 
 /// The outcome of one controlled attempt.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,8 +47,8 @@ pub struct Controller {
     pub beta: f64,
     /// The error exponent 1/k used on rejection.
     pub reject_exponent: f64,
-    /// The scaled error of the last accepted step.
-    err_prev: f64,
+    /// ln of the scaled error of the last accepted step (at least ln 1e-4).
+    ln_err_prev: f64,
     /// Whether the last attempt was rejected.
     rejected: bool,
 }
@@ -59,7 +65,7 @@ impl Controller {
             alpha: inv_k - 0.75 * beta,
             beta,
             reject_exponent: inv_k,
-            err_prev: 1e-4,
+            ln_err_prev: LN_ERR_FLOOR,
             rejected: false,
         }
     }
@@ -86,7 +92,7 @@ impl Controller {
     pub fn decide(&mut self, err: f64) -> Decision {
         if err.is_nan() || err > 1.0 {
             let factor = if err.is_finite() {
-                (self.safety * err.powf(-self.reject_exponent)).max(self.min_factor)
+                (self.safety * (-self.reject_exponent * err.ln()).exp()).max(self.min_factor)
             } else {
                 self.min_factor
             };
@@ -96,19 +102,17 @@ impl Controller {
                 factor: factor.min(1.0),
             };
         }
+        let ln_err = err.ln();
         let mut factor = if err == 0.0 {
             self.max_factor
         } else {
-            let mut fac = self.safety * err.powf(-self.alpha);
-            if self.beta != 0.0 {
-                fac *= self.err_prev.powf(self.beta);
-            }
+            let fac = self.safety * (self.beta * self.ln_err_prev - self.alpha * ln_err).exp();
             fac.clamp(self.min_factor, self.max_factor)
         };
         if self.rejected {
             factor = factor.min(1.0);
         }
-        self.err_prev = err.max(1e-4);
+        self.ln_err_prev = ln_err.max(LN_ERR_FLOOR);
         self.rejected = false;
         Decision {
             accept: true,
@@ -117,7 +121,7 @@ impl Controller {
     }
     /// Forgets the history (a restart, e.g. after an event that changes the system).
     pub fn reset(&mut self) {
-        self.err_prev = 1e-4;
+        self.ln_err_prev = LN_ERR_FLOOR;
         self.rejected = false;
     }
 }

@@ -55,18 +55,27 @@ pub fn starting_step(k: u32, d0: f64, d1: f64, d2: impl FnOnce(f64) -> f64) -> f
     (100.0 * h0).min(h1)
 }
 
-/// The checks of a step's end time: finite and not the current time.
+/// The checks of a step's end time: finite and not the current time. Inlined into every
+/// attempt, with the refusals out of line.
+#[inline(always)]
 pub(crate) fn check_end_time(t: f64, t1: f64) -> Result<f64, IntegratorError> {
     let h = t1 - t;
-    if !t1.is_finite() {
-        return Err(IntegratorError::NonFinite {
-            what: "step end time t1",
-        });
-    }
-    if h == 0.0 {
-        return Err(IntegratorError::InvalidParameter {
-            reason: format!("a step needs an end time t1 ≠ t (both {t})"),
-        });
+    if !t1.is_finite() || h == 0.0 {
+        return Err(end_time_refused(t, t1));
     }
     Ok(h)
+}
+
+#[cold]
+#[inline(never)]
+fn end_time_refused(t: f64, t1: f64) -> IntegratorError {
+    if !t1.is_finite() {
+        IntegratorError::NonFinite {
+            what: "step end time t1",
+        }
+    } else {
+        IntegratorError::InvalidParameter {
+            reason: format!("a step needs an end time t1 ≠ t (both {t})"),
+        }
+    }
 }

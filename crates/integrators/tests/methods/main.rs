@@ -12,6 +12,7 @@ mod baselines;
 mod casimir_drift;
 mod compose;
 mod control_input;
+mod controller;
 mod dense_output;
 mod derivative_check;
 mod diagonal_velocity;
