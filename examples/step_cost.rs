@@ -17,13 +17,18 @@
 //! `<free|top>/rk4-hand`, `…/rk4`, `…/rkmk4`, `…/strang`, `…/lp-cayley-0.5`, `…/lp-cayley-0`,
 //! `free/modified/<exp|cayley>/<0.5|0>/<4|6>`, `…/processed/<scheme>` (steps only) and
 //! `…/processed-read/<scheme>` (a step and a read, which applies the processor),
-//! `top/kinetic-kick/<strang|blanes-moan-4|blanes-moan-6>`, `top/processed-kk/<scheme>`.
+//! `top/kinetic-kick/<strang|blanes-moan-4|blanes-moan-6>`, `top/processed-kk/<scheme>`;
+//! the embedded pairs `…/fixed/<pair>` (fixed steps of h) and `…/adaptive/<pair>` (n accepted
+//! steps under error control at rtol = atol = 1e-9, rejected attempts included), for `<pair>` one
+//! of `dopri5`, `dop853` (on (q, Π)), `rkmk-dopri5`, `rkmk-dop853`: the price of error control
+//! per accepted step.
 
 #[path = "../benches/common/hand_rk4.rs"]
 mod hand_rk4;
 
 use hand_rk4::HandRk4;
-use integrators::baselines::{QuaternionRk4, Rkmk4};
+use integrators::adaptive::{Adaptive, EmbeddedPair, RkmkDop853, RkmkDopri5, Tolerance};
+use integrators::baselines::{QuaternionDop853, QuaternionDopri5, QuaternionRk4, Rkmk4};
 use integrators::processing::{Processed, ProcessingScheme};
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
 use integrators::{Integrator, IntegratorError, LiePoisson, System};
@@ -53,6 +58,38 @@ fn steps<I: Integrator<Group = So3>>(
         }
     }
     Ok(acc + i.momentum()[0])
+}
+
+/// n accepted steps of `pair` under error control at 1e-9 (towards a time it does not reach).
+fn accepted<P: EmbeddedPair<Group = So3>>(pair: P, n: usize) -> Result<f64, IntegratorError> {
+    let mut run = Adaptive::new(pair, Tolerance::uniform(1e-9)?);
+    for _ in 0..n {
+        run.step_towards(black_box(1e9))?;
+    }
+    Ok(run.method().momentum()[0])
+}
+
+/// Fixed steps (`adaptive` false) or accepted steps under error control of the pair `name`.
+fn pair<S: System<So3> + Clone>(
+    system: S,
+    name: &str,
+    adaptive: bool,
+    n: usize,
+) -> Result<f64, IntegratorError> {
+    let (pi0, g) = (Vector3::new(0.5, 1.0, 0.2), Some(g0()));
+    match (name, adaptive) {
+        ("dopri5", false) => steps(QuaternionDopri5::new(system, pi0, g)?, n, false),
+        ("dopri5", true) => accepted(QuaternionDopri5::new(system, pi0, g)?, n),
+        ("dop853", false) => steps(QuaternionDop853::new(system, pi0, g)?, n, false),
+        ("dop853", true) => accepted(QuaternionDop853::new(system, pi0, g)?, n),
+        ("rkmk-dopri5", false) => steps(RkmkDopri5::new(system, pi0, g)?, n, false),
+        ("rkmk-dopri5", true) => accepted(RkmkDopri5::new(system, pi0, g)?, n),
+        ("rkmk-dop853", false) => steps(RkmkDop853::new(system, pi0, g)?, n, false),
+        ("rkmk-dop853", true) => accepted(RkmkDop853::new(system, pi0, g)?, n),
+        _ => Err(IntegratorError::InvalidParameter {
+            reason: format!("unknown embedded pair {name:?} (see the example's doc comment)"),
+        }),
+    }
 }
 
 fn run<S: System<So3> + Clone + integrators::splitting::SplitSystem<So3>>(
@@ -120,6 +157,8 @@ fn run<S: System<So3> + Clone + integrators::splitting::SplitSystem<So3>>(
             n,
             false,
         ),
+        ["fixed", name] => pair(system, name, false, n),
+        ["adaptive", name] => pair(system, name, true, n),
         _ => Err(IntegratorError::InvalidParameter {
             reason: format!("unknown method {method:?} (see the example's doc comment)"),
         }),

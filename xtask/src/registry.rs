@@ -151,6 +151,25 @@ const CHOOSING: &str = "docs/choosing.md";
 const EXACT: &[&str] = &["exact", "kinetic-kick", "processed-kinetic-kick"];
 const ERROR_TARGETS: &[f64] = &[1e-4, 1e-6, 1e-8, 1e-10];
 const ENERGY_TARGETS: &[f64] = &[1e-3, 1e-5, 1e-7, 1e-9];
+/// The embedded pairs' fixed steps and accepted steps under error control (`examples/step_cost.rs`).
+const ADAPTIVE_FREE: &[&str] = &[
+    "free/fixed/dopri5",
+    "free/adaptive/dopri5",
+    "free/adaptive/dop853",
+    "free/fixed/rkmk-dopri5",
+    "free/adaptive/rkmk-dopri5",
+    "free/fixed/rkmk-dop853",
+    "free/adaptive/rkmk-dop853",
+];
+const ADAPTIVE_TOP: &[&str] = &[
+    "top/fixed/dopri5",
+    "top/adaptive/dopri5",
+    "top/adaptive/dop853",
+    "top/fixed/rkmk-dopri5",
+    "top/adaptive/rkmk-dopri5",
+    "top/fixed/rkmk-dop853",
+    "top/adaptive/rkmk-dop853",
+];
 
 /// `lie-sim sweep examples/scenes/sweep-rotors.toml --threads 1` with more arguments, as the
 /// cargo arguments of one run of the `sweep-batched` generator.
@@ -1292,6 +1311,29 @@ pub fn all() -> Vec<Generator> {
                         "top/processed-kk/blanes-6",
                         "top/processed-kk/blanes-casas-murua-6-11",
                     ],
+                },
+            ]),
+        },
+        Generator {
+            name: "callgrind-adaptive",
+            about: "instructions per accepted step of the embedded pairs, fixed against adaptive (valgrind)",
+            takes: "2 min",
+            how: How::Callgrind(&[
+                CallgrindTable {
+                    at: At {
+                        file: BENCH,
+                        part: "callgrind-adaptive-free-body",
+                    },
+                    competitor: "free/fixed/dop853",
+                    rows: ADAPTIVE_FREE,
+                },
+                CallgrindTable {
+                    at: At {
+                        file: BENCH,
+                        part: "callgrind-adaptive-heavy-top",
+                    },
+                    competitor: "top/fixed/dop853",
+                    rows: ADAPTIVE_TOP,
                 },
             ]),
         },
