@@ -80,6 +80,39 @@ impl<K: Kernel> Batch<K> {
         Self::build(kernel, momenta.len(), |i| (momenta[i].into(), r(i)), level)
     }
 
+    /// Starts the batch over with the bodies `momenta`, `attitudes` (as [`Batch::new`]: one
+    /// attitude per body or one for all), keeping its method, level, composition, monitoring
+    /// and execution, and its storage: a caller that steps many batches one after the other
+    /// (`lie-sim sweep`, a chunk at a time) allocates once instead of once a batch. The bodies
+    /// then have the bits [`Batch::new`] would give them.
+    ///
+    /// Errors: as [`Batch::new`]; on an error the batch is left as it was.
+    pub fn refill(
+        &mut self,
+        momenta: &[Vector3<f64>],
+        attitudes: &[So3],
+    ) -> Result<(), BatchError> {
+        if momenta.is_empty() {
+            return Err(BatchError::Empty { what: "momenta" });
+        }
+        if attitudes.len() != momenta.len() && attitudes.len() != 1 {
+            return Err(BatchError::LengthMismatch {
+                what: "attitudes",
+                got: attitudes.len(),
+                expected: momenta.len(),
+            });
+        }
+        let r = |i: usize| rows(&attitudes[if attitudes.len() == 1 { 0 } else { i }]);
+        fill(&self.kernel, &mut self.groups, momenta.len(), |i| {
+            (momenta[i].into(), r(i))
+        })?;
+        self.len = momenta.len();
+        self.inner_steps = 0;
+        self.outer_steps = 0;
+        self.clock = Clock::at(0.0);
+        Ok(())
+    }
+
     /// N bodies from structure-of-arrays input: `pi[c][i]` is Πc of body i and `r[e][i]` entry e
     /// (row-major) of its attitude. Errors: no body, arrays of different lengths, a level the CPU
     /// lacks.
@@ -116,35 +149,8 @@ impl<K: Kernel> Batch<K> {
         level: Level,
     ) -> Result<Self, BatchError> {
         level.check()?;
-        let glen = group_len::<K>();
-        let ngroups = len.div_ceil(GROUP);
-        let mut groups = vec![0.0; ngroups * glen];
-        let identity = rows(&So3::identity());
-        let benign =
-            kernel
-                .init_lane([0.0; 3], identity)
-                .ok_or_else(|| BatchError::InvalidParameter {
-                    reason: "the method refuses the body at rest".into(),
-                })?;
-        for i in 0..ngroups * GROUP {
-            let (g, l) = (i / GROUP, i % GROUP);
-            let group = &mut groups[g * glen..(g + 1) * glen];
-            let state = (i < len).then(|| lane(i));
-            let init = state.and_then(|(pi, r)| kernel.init_lane(pi, r));
-            let alive = match (&state, &init) {
-                (Some(_), Some(_)) => 1.0,
-                _ => -1.0,
-            };
-            for (c, x) in init.as_ref().unwrap_or(&benign).iter().enumerate() {
-                group[c * GROUP + l] = *x;
-            }
-            group[book_index::<K>(Book::Alive, l)] = alive;
-            if let (Some((pi, r)), Some(_)) = (state, &init) {
-                let (e0, c0) = kernel.initial_observation(pi, r);
-                group[book_index::<K>(Book::E0, l)] = e0;
-                group[book_index::<K>(Book::C0, l)] = c0.unwrap_or(f64::NAN);
-            }
-        }
+        let mut groups = Vec::new();
+        fill(&kernel, &mut groups, len, lane)?;
         Ok(Self {
             kernel,
             level,
@@ -298,6 +304,18 @@ impl<K: Kernel> Batch<K> {
     /// and Casimir errors over the monitored states and the current one (which this folds into
     /// the maxima). `index` numbers the bodies (the ensemble passes their sweep indices).
     pub fn summaries(&mut self, index: impl Fn(usize) -> usize) -> Vec<Summary<Vector3<f64>>> {
+        let mut out = Vec::with_capacity(self.len);
+        self.summaries_into(index, &mut out);
+        out
+    }
+
+    /// [`Batch::summaries`] into `out` (cleared first, its allocation kept): a caller stepping
+    /// batch after batch reuses one vector.
+    pub fn summaries_into(
+        &mut self,
+        index: impl Fn(usize) -> usize,
+        out: &mut Vec<Summary<Vector3<f64>>>,
+    ) {
         struct Fold;
         impl<K: Kernel> GroupFn<K> for Fold {
             #[inline(always)]
@@ -310,36 +328,77 @@ impl<K: Kernel> Batch<K> {
         }
         // Cannot fail: the level was checked when the batch was built.
         let _ = engine::for_each_vector(self.level, &self.kernel, &mut self.groups, Fold);
-        self.lanes()
-            .enumerate()
-            .map(|(i, (group, l))| {
-                let book = |b: Book| group[book_index::<K>(b, l)];
-                let status = match lane_status::<K>(group, l) {
-                    LaneStatus::Running => Status::Completed,
-                    LaneStatus::Failed { step } => Status::StepFailed {
-                        step: step as usize,
-                        error: self.kernel.step_error(),
-                    },
-                    LaneStatus::Invalid => Status::BuildFailed(self.kernel.build_error()),
-                };
-                let built = !matches!(status, Status::BuildFailed(_));
-                let (steps, time) = match status {
-                    Status::Completed => (self.outer_steps as usize, self.clock.now()),
-                    _ => (book(Book::Taken) as usize, book(Book::Time)),
-                };
-                Summary {
-                    index: index(i),
-                    status,
-                    steps,
-                    time,
-                    momentum: built.then(|| published(&self.kernel, group, l).0),
-                    initial_energy: if built { book(Book::E0) } else { f64::NAN },
-                    max_energy_error: book(Book::De),
-                    max_casimir_error: (built && self.kernel.has_casimir()).then(|| book(Book::Dc)),
-                }
-            })
-            .collect()
+        out.clear();
+        out.extend(self.lanes().enumerate().map(|(i, (group, l))| {
+            let book = |b: Book| group[book_index::<K>(b, l)];
+            let status = match lane_status::<K>(group, l) {
+                LaneStatus::Running => Status::Completed,
+                LaneStatus::Failed { step } => Status::StepFailed {
+                    step: step as usize,
+                    error: self.kernel.step_error(),
+                },
+                LaneStatus::Invalid => Status::BuildFailed(self.kernel.build_error()),
+            };
+            let built = !matches!(status, Status::BuildFailed(_));
+            let (steps, time) = match status {
+                Status::Completed => (self.outer_steps as usize, self.clock.now()),
+                _ => (book(Book::Taken) as usize, book(Book::Time)),
+            };
+            Summary {
+                index: index(i),
+                status,
+                steps,
+                time,
+                momentum: built.then(|| published(&self.kernel, group, l).0),
+                initial_energy: if built { book(Book::E0) } else { f64::NAN },
+                max_energy_error: book(Book::De),
+                max_casimir_error: (built && self.kernel.has_casimir()).then(|| book(Book::Dc)),
+            }
+        }));
     }
+}
+
+/// Lays out `len` bodies (`lane(i)`: Π and row-major R of body i) in `groups`, its old contents
+/// overwritten and its allocation kept where it is large enough: each lane's state, its status
+/// and the energy and Casimir of its initial state; the padding of the last group is the benign
+/// body at rest. `groups` is left as it was on an error.
+fn fill<K: Kernel>(
+    kernel: &K,
+    groups: &mut Vec<f64>,
+    len: usize,
+    lane: impl Fn(usize) -> ([f64; 3], [f64; 9]),
+) -> Result<(), BatchError> {
+    let glen = group_len::<K>();
+    let ngroups = len.div_ceil(GROUP);
+    let identity = rows(&So3::identity());
+    let benign =
+        kernel
+            .init_lane([0.0; 3], identity)
+            .ok_or_else(|| BatchError::InvalidParameter {
+                reason: "the method refuses the body at rest".into(),
+            })?;
+    groups.clear();
+    groups.resize(ngroups * glen, 0.0);
+    for i in 0..ngroups * GROUP {
+        let (g, l) = (i / GROUP, i % GROUP);
+        let group = &mut groups[g * glen..(g + 1) * glen];
+        let state = (i < len).then(|| lane(i));
+        let init = state.and_then(|(pi, r)| kernel.init_lane(pi, r));
+        let alive = match (&state, &init) {
+            (Some(_), Some(_)) => 1.0,
+            _ => -1.0,
+        };
+        for (c, x) in init.as_ref().unwrap_or(&benign).iter().enumerate() {
+            group[c * GROUP + l] = *x;
+        }
+        group[book_index::<K>(Book::Alive, l)] = alive;
+        if let (Some((pi, r)), Some(_)) = (state, &init) {
+            let (e0, c0) = kernel.initial_observation(pi, r);
+            group[book_index::<K>(Book::E0, l)] = e0;
+            group[book_index::<K>(Book::C0, l)] = c0.unwrap_or(f64::NAN);
+        }
+    }
+    Ok(())
 }
 
 /// The published (Π, R) of lane l of a group, on one scalar lane.

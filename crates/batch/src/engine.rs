@@ -171,14 +171,23 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
                     }
                 }
                 let ok = kernel.finite(&new).and(alive);
-                let st = K::select(ok, &new, &st);
+                // Every lane stepped (the usual case): the new state as it is, without the
+                // blend that keeps a failed or stopped lane's old state; the same bits.
+                let all = !ok.not().any();
+                let st = if all { new } else { K::select(ok, &new, &st) };
                 kernel.store(&st, group, off);
-                let failed = alive.and(ok.not());
-                if failed.any() {
-                    record_failure(s, failed, group, c, off, outer - 1, clock.now());
+                if !all {
+                    let failed = alive.and(ok.not());
+                    if failed.any() {
+                        record_failure(s, failed, group, c, off, outer - 1, clock.now());
+                    }
                 }
                 if monitor {
-                    monitor_lanes(s, kernel, &st, ok, group, off);
+                    if all {
+                        monitor_all(s, kernel, &st, group, off);
+                    } else {
+                        monitor_lanes(s, kernel, &st, ok, group, off);
+                    }
                 }
             }
         }
@@ -232,6 +241,26 @@ pub(crate) fn monitor_lanes<S: Simd, K: Kernel>(
     if let Some(cas) = cas {
         let [c0] = load_n(s, group, c + Book::C0 as usize, off);
         out[1] = mask.select(dc.max((cas - c0).abs()), dc);
+    }
+    store_n(&out, group, c + Book::De as usize, off);
+}
+
+/// [`monitor_lanes`] on every lane of the vector (no blend: the same bits as an all-true mask).
+#[inline(always)]
+fn monitor_all<S: Simd, K: Kernel>(
+    s: S,
+    kernel: &K,
+    st: &K::State<S>,
+    group: &mut [f64],
+    off: usize,
+) {
+    let c = K::COMPONENTS;
+    let (e, cas) = kernel.observe(st);
+    let [e0, _c0, de, dc] = load_n(s, group, c + Book::E0 as usize, off);
+    let mut out = [de.max((e - e0).abs()), dc];
+    if let Some(cas) = cas {
+        let [c0] = load_n(s, group, c + Book::C0 as usize, off);
+        out[1] = dc.max((cas - c0).abs());
     }
     store_n(&out, group, c + Book::De as usize, off);
 }

@@ -7,6 +7,7 @@ mod common;
 use batch::{Batch, BatchError, BodyModel, Kernel, LaneStatus, Level, QuaternionRk4, Strang};
 use common::{bodies, state, tops};
 use integrators::ensemble::{Execution, Status};
+use integrators::CompositionScheme;
 use lie_groups::{LieGroup, So3};
 use nalgebra::Vector3;
 
@@ -261,4 +262,73 @@ fn the_splitting_keeps_its_invariants_over_a_million_steps() {
         );
         assert!(early[i] > 0.0 && early[i] < 1e-4, "{}", early[i]);
     }
+}
+
+/// A summary as comparable bits (status, steps, time, Π, E₀, the error maxima).
+fn summary_bits(s: &integrators::ensemble::Summary<Vector3<f64>>) -> (String, usize, Vec<u64>) {
+    let mut bits = vec![s.time.to_bits(), s.initial_energy.to_bits()];
+    bits.push(s.max_energy_error.to_bits());
+    bits.extend(s.max_casimir_error.map(f64::to_bits));
+    bits.extend(
+        s.momentum
+            .iter()
+            .flat_map(|m| m.iter().map(|x| x.to_bits())),
+    );
+    (format!("{:?}", s.status), s.steps, bits)
+}
+
+/// `Batch::refill` (the sweep's chunks reuse one batch) gives the bodies the bits a new batch
+/// gives them: states, statuses, times and monitored errors, with a composition, a body that
+/// fails mid-run and one refused at build, after the batch had run other bodies (larger and
+/// smaller, so that the storage both shrinks and grows).
+#[test]
+fn a_refilled_batch_is_a_new_batch() {
+    let body = bodies().remove(0);
+    let kernel = Strang::new(BodyModel::free(&body).unwrap());
+    let mut pis: Vec<_> = (0..203u64).map(|i| state(1.5, 9, i).0).collect();
+    // one body that overflows mid-run, one that cannot start
+    pis[17] = Vector3::new(1e300, 3e300, -2e300);
+    pis[150] = Vector3::new(f64::NAN, 0.0, 1.0);
+    let rs = [So3::identity()];
+    let scheme = CompositionScheme::kahan_li_6();
+    let fresh = |pis: &[Vector3<f64>]| {
+        let mut b = Batch::new(kernel.clone(), pis, &rs, Level::detect())
+            .unwrap()
+            .with_composition(scheme.clone())
+            .unwrap()
+            .monitor_every(3);
+        b.run(H, STEPS).unwrap();
+        b.summaries(|i| i)
+            .iter()
+            .map(summary_bits)
+            .collect::<Vec<_>>()
+    };
+    let mut reused = Batch::new(kernel.clone(), &pis[..50], &rs, Level::detect())
+        .unwrap()
+        .with_composition(scheme.clone())
+        .unwrap()
+        .monitor_every(3);
+    let mut out = Vec::new();
+    for part in [&pis[..], &pis[100..140], &pis[..]] {
+        reused.run(H, 7).unwrap();
+        reused.refill(part, &rs).unwrap();
+        assert_eq!(reused.steps(), 0);
+        assert_eq!(reused.len(), part.len());
+        reused.run(H, STEPS).unwrap();
+        reused.summaries_into(|i| i, &mut out);
+        let got: Vec<_> = out.iter().map(summary_bits).collect();
+        assert!(got == fresh(part), "{} bodies refilled", part.len());
+    }
+    assert!(matches!(out[17].status, Status::StepFailed { .. }));
+    assert!(matches!(out[150].status, Status::BuildFailed(_)));
+    // bad input leaves the batch as it was
+    assert!(matches!(
+        reused.refill(&[], &rs),
+        Err(BatchError::Empty { .. })
+    ));
+    assert!(matches!(
+        reused.refill(&pis[..3], &[So3::identity(); 2]),
+        Err(BatchError::LengthMismatch { .. })
+    ));
+    assert_eq!(reused.len(), pis.len());
 }

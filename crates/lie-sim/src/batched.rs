@@ -75,53 +75,83 @@ impl Plan {
 
     /// One summary per member (momenta `members`, sweep indices `indices`) after `steps` steps of
     /// h, energy and Casimir monitored every `monitor_every` steps, as
-    /// `integrators::ensemble::Ensemble` reports them for the scalar method.
-    pub fn run<A: Vector>(
+    /// `integrators::ensemble::Ensemble` reports them for the scalar method. The batch, the
+    /// momenta and the summaries live in `scratch`, which the sweep hands every chunk, so that
+    /// the chunks after the first allocate nothing (the same bits as a new batch per chunk).
+    #[allow(clippy::too_many_arguments)]
+    pub fn run<'s, A: Vector>(
         &self,
+        scratch: &'s mut Scratch,
         members: &[A],
         indices: &[usize],
         h: f64,
         steps: usize,
         monitor_every: usize,
         execution: Execution,
-    ) -> Result<Vec<Summary<Vector3<f64>>>, BatchError> {
+    ) -> Result<&'s [Summary<Vector3<f64>>], BatchError> {
+        let Scratch {
+            strang,
+            rk4,
+            momenta,
+            summaries,
+        } = scratch;
+        momenta.clear();
+        momenta.extend(members.iter().map(|mu| Vector3::from_fn(|i, _| mu.get(i))));
+        let job = (momenta.as_slice(), indices, summaries);
         match self.kind {
             Batched::Strang => self.batch(
-                Strang::new(self.body.clone()),
-                members,
-                indices,
+                strang,
+                || Strang::new(self.body.clone()),
+                job,
                 (h, steps, monitor_every),
                 execution,
-            ),
+            )?,
             Batched::Rk4 => self.batch(
-                QuaternionRk4::new(self.body.clone()),
-                members,
-                indices,
+                rk4,
+                || QuaternionRk4::new(self.body.clone()),
+                job,
                 (h, steps, monitor_every),
                 execution,
-            ),
+            )?,
         }
+        Ok(scratch.summaries.as_slice())
     }
 
-    fn batch<K: Kernel, A: Vector>(
+    fn batch<K: Kernel>(
         &self,
-        kernel: K,
-        members: &[A],
-        indices: &[usize],
+        slot: &mut Option<Batch<K>>,
+        kernel: impl FnOnce() -> K,
+        (momenta, indices, out): (&[Vector3<f64>], &[usize], &mut Vec<Summary<Vector3<f64>>>),
         (h, steps, monitor_every): (f64, usize, usize),
         execution: Execution,
-    ) -> Result<Vec<Summary<Vector3<f64>>>, BatchError> {
-        let momenta: Vec<Vector3<f64>> = members
-            .iter()
-            .map(|mu| Vector3::from_fn(|i, _| mu.get(i)))
-            .collect();
-        let mut b = Batch::new(kernel, &momenta, &[self.g0], self.level)?
-            .monitor_every(monitor_every as u64)
-            .parallel(execution);
-        if let Some(c) = &self.composition {
-            b = b.with_composition(c.clone())?;
-        }
+    ) -> Result<(), BatchError> {
+        let b = match slot.take() {
+            Some(mut b) => {
+                b.refill(momenta, &[self.g0])?;
+                b
+            }
+            None => {
+                let mut b = Batch::new(kernel(), momenta, &[self.g0], self.level)?
+                    .monitor_every(monitor_every as u64);
+                if let Some(c) = &self.composition {
+                    b = b.with_composition(c.clone())?;
+                }
+                b
+            }
+        };
+        let b = slot.insert(b.monitor_every(monitor_every as u64).parallel(execution));
         b.run(h, steps as u64)?;
-        Ok(b.summaries(|i| indices[i]))
+        b.summaries_into(|i| indices[i], out);
+        Ok(())
     }
+}
+
+/// What a sweep's batched chunks reuse, one chunk after the other: the batch (its storage of a
+/// chunk's lanes), the chunk's momenta and its summaries. Empty until the first chunk.
+#[derive(Debug, Default)]
+pub struct Scratch {
+    strang: Option<Batch<Strang>>,
+    rk4: Option<Batch<QuaternionRk4>>,
+    momenta: Vec<Vector3<f64>>,
+    summaries: Vec<Summary<Vector3<f64>>>,
 }

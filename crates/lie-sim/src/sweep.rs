@@ -348,16 +348,27 @@ impl<K: Sink> SweepJob<'_, K> {
         };
         let mut tally = Tally::default();
         let mut all = self.shard.iter(n);
+        // Reused from one chunk to the next, so that the chunks after the first allocate
+        // (almost) nothing.
+        let mut scratch = crate::batched::Scratch::default();
+        let mut indices: Vec<usize> = Vec::new();
+        let mut members: Vec<Alg<G<M>>> = Vec::new();
         loop {
-            let indices: Vec<usize> = all.by_ref().take(CHUNK).collect();
+            indices.clear();
+            indices.extend(all.by_ref().take(CHUNK));
             if indices.is_empty() {
                 break;
             }
-            let members: Vec<Alg<G<M>>> = on(self.pool, |execution| match execution {
-                Execution::Sequential => indices.iter().map(|&i| draw(i)).collect::<Result<_, _>>(),
+            members.clear();
+            on(self.pool, |execution| match execution {
+                Execution::Sequential => indices.iter().try_for_each(|&i| {
+                    members.push(draw(i)?);
+                    Ok(())
+                }),
                 Execution::Parallel => {
                     use rayon::prelude::*;
-                    indices.par_iter().map(|&i| draw(i)).collect()
+                    let drawn: Result<Vec<_>, _> = indices.par_iter().map(|&i| draw(i)).collect();
+                    drawn.map(|d| members.extend(d))
                 }
             })
             .map_err(&failed)?;
@@ -365,6 +376,7 @@ impl<K: Sink> SweepJob<'_, K> {
                 Ok(plan) => {
                     let summaries = on(self.pool, |execution| {
                         plan.run(
+                            &mut scratch,
                             &members,
                             &indices,
                             self.h,
@@ -378,11 +390,11 @@ impl<K: Sink> SweepJob<'_, K> {
                             reason: format!("batched sweep: {e}"),
                         })
                     })?;
-                    tally.fold(&summaries);
-                    on(self.pool, |execution| sink.take(&summaries, dim, execution))?;
+                    tally.fold(summaries);
+                    on(self.pool, |execution| sink.take(summaries, dim, execution))?;
                 }
                 Err(_) => {
-                    let ensemble = Ensemble::new(members, self.h, self.steps)
+                    let ensemble = Ensemble::new(std::mem::take(&mut members), self.h, self.steps)
                         .map_err(&failed)?
                         .monitor_every(self.spec.monitor_every);
                     let mut summaries: Vec<Summary<Alg<G<M>>>> = on(self.pool, |execution| {
