@@ -1510,12 +1510,23 @@ pub fn all() -> Vec<Generator> {
         },
         Generator {
             name: "sweep-batched",
-            about: "`lie-sim sweep` of rotors on one thread, batched and `--scalar`: 100 000 × 200 steps, 20 000 × 2000 steps",
+            about: "`lie-sim sweep` of rotors on one thread, batched and `--scalar`: 10⁶ × 200 steps, 20 000 × 2000 steps",
             takes: "1 min",
             how: How::Output(Output {
                 runs: &[
-                    sweep_rotors!("--out", "target/lie-sim/rotors-batched.csv"),
-                    sweep_rotors!("--scalar", "--out", "target/lie-sim/rotors-scalar.csv"),
+                    sweep_rotors!(
+                        "--count",
+                        "1000000",
+                        "--out",
+                        "target/lie-sim/rotors-batched.csv"
+                    ),
+                    sweep_rotors!(
+                        "--count",
+                        "1000000",
+                        "--scalar",
+                        "--out",
+                        "target/lie-sim/rotors-scalar.csv"
+                    ),
                     sweep_rotors!(
                         "--count",
                         "20000",
