@@ -77,7 +77,7 @@ impl Plan {
     /// h, energy and Casimir monitored every `monitor_every` steps, as
     /// `integrators::ensemble::Ensemble` reports them for the scalar method. The batch, the
     /// momenta and the summaries live in `scratch`, which the sweep hands every chunk, so that
-    /// the chunks after the first allocate nothing (the same bits as a new batch per chunk).
+    /// no chunk after the first allocates a large buffer (the same bits as a new batch per chunk).
     #[allow(clippy::too_many_arguments)]
     pub fn run<'s, A: Vector>(
         &self,
