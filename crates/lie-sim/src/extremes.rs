@@ -685,17 +685,6 @@ fn sweep(specs: &[MethodSpec], fault: Fault) -> Tally {
 /// |Π| = 10^±150 it is evaluated scale-free: the overflow of h⁴ there is fixed,
 /// `tests/models/modified.rs`.)
 ///
-/// On the quadrotor (unforced: SE(3) with gravity), the compositions and processed forms of
-/// Lie–Poisson miss their κ-scaled order bound at hω = 0.1 (triple-jump-4: 2.9e-2 with
-/// τ = exp, 5.5e-2 with τ = cayley, bound 1.6e-2; processed blanes-6 with τ = cayley 3.8e-4,
-/// bound 1.6e-4), where they hold on every other system. Lie–Poisson
-/// itself (θ = ½, τ = exp) on this state errs by 8.0e-2 at hω = 0.1 and falls 4× per halving
-/// (order 2), 570 times its error on the same state without gravity; triple-jump-4 on it falls
-/// 6.7, 11.3, 14.4, 15.6 times per halving from hω = 0.2 (order 4 only below hω ≈ 0.05). The
-/// methods converge at their orders: ω = |Ω| understates the motion's rate here, where gravity
-/// drives a linear momentum that starts small (|P₀| = 0.3 against m g = 43 per unit time) and
-/// the discrete P × v coupling into Π scales with it.
-///
 /// On the rod's separatrix states, hω = 0.1 with ω = |Ω| does not resolve the motion: the flow's
 /// condition number over ωT = 2 is κ ≈ 10⁵ (the reference's spread over inputs 2 ulps off,
 /// 2e-11 to 8e-11, over 2ε), and every approximate method misses by 0.5 to 1.0 there, within its
@@ -703,7 +692,6 @@ fn sweep(specs: &[MethodSpec], fault: Fault) -> Tally {
 /// exact flow and the reference agree to 1.2e-9.
 const KNOWN: &[(&str, &str)] = &[
     ("(rod, ratio 1e6)", "with modified (order"),
-    ("quadrotor", "∘ lie-poisson"),
     ("(rod, ratio 1e6), separatrix", "with kahan-li-8"),
 ];
 

@@ -244,6 +244,48 @@ fn first_zero<G: lie_groups::CayleyGroup, S: System<G>>(
     }
 }
 
+/// The quadrotor's rate is its potential's frequency: the square root of the largest singular
+/// value of the force derivative K(g) (`force_derivative`, checked against finite differences in
+/// `systems_quadrotor.rs`) normalized by the mass matrix 𝕄 = diag(𝕀, m I₃), the largest over
+/// attitudes (reached where the vertical Γ is normal to the least principal axis), or the spin
+/// |Ω| where that is faster.
+#[test]
+fn the_quadrotors_rate_is_its_force_derivatives_frequency() {
+    let (m, g) = (4.34, 9.81);
+    let inertia = Matrix3::new(0.09, 0.004, 0.0, 0.004, 0.0845, 0.002, 0.0, 0.002, 0.1377);
+    let quad = Quadrotor::new(m, inertia, g).unwrap();
+    let mut half = Matrix6::zeros();
+    let root = inertia.symmetric_eigen();
+    let inv_sqrt = root.eigenvectors
+        * Matrix3::from_diagonal(&root.eigenvalues.map(|l| 1.0 / l.sqrt()))
+        * root.eigenvectors.transpose();
+    half.fixed_view_mut::<3, 3>(0, 0).copy_from(&inv_sqrt);
+    half.fixed_view_mut::<3, 3>(3, 3)
+        .copy_from(&(Matrix3::identity() / m.sqrt()));
+    let mut largest = 0.0f64;
+    for k in 0..400 {
+        let a = k as f64 * 0.37;
+        let attitude = So3::exp(&Vector3::new(a.sin() * 2.0, (1.3 * a).cos(), 0.5 * a));
+        let at = Se3::from_parts(attitude, Vector3::zeros());
+        let k = half * quad.force_derivative(&at) * half;
+        largest = largest.max(k.singular_values().max());
+    }
+    let rate = quad.characteristic_rate(&Vector6::zeros(), None);
+    let frequency = largest.sqrt();
+    assert!(
+        (rate - frequency).abs() < 1e-3 * frequency && rate >= frequency,
+        "{rate} vs {frequency}"
+    );
+    // Spinning faster than that: the spin.
+    let pi = inertia * Vector3::new(0.0, 0.0, 40.0);
+    let spin = Vector6::new(pi.x, pi.y, pi.z, 1.0, 0.0, 0.0);
+    let fast = quad.characteristic_rate(&spin, None);
+    assert!((fast - 40.0).abs() < 1e-6, "{fast}");
+    // Without gravity, the spin alone (the free body's |Ω|).
+    let free = Quadrotor::new(m, inertia, 0.0).unwrap();
+    assert_eq!(free.characteristic_rate(&Vector6::zeros(), None), 0.0);
+}
+
 #[test]
 fn rates_are_the_frequencies_of_the_motion() {
     // The hanging top (χ = −ℓ e₃ below the pivot) swinging about its least principal axis e₁:
