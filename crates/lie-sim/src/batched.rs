@@ -97,7 +97,11 @@ impl Plan {
         } = scratch;
         momenta.clear();
         momenta.extend(members.iter().map(|mu| Vector3::from_fn(|i, _| mu.get(i))));
-        let job = (momenta.as_slice(), indices, summaries);
+        let job = Job {
+            momenta: momenta.as_slice(),
+            indices,
+            out: summaries,
+        };
         match self.kind {
             Batched::Strang => self.batch(
                 strang,
@@ -121,7 +125,11 @@ impl Plan {
         &self,
         slot: &mut Option<Batch<K>>,
         kernel: impl FnOnce() -> K,
-        (momenta, indices, out): (&[Vector3<f64>], &[usize], &mut Vec<Summary<Vector3<f64>>>),
+        Job {
+            momenta,
+            indices,
+            out,
+        }: Job<'_>,
         (h, steps, monitor_every): (f64, usize, usize),
         execution: Execution,
     ) -> Result<(), BatchError> {
@@ -144,6 +152,13 @@ impl Plan {
         b.summaries_into(|i| indices[i], out);
         Ok(())
     }
+}
+
+/// One chunk's work: its members' momenta and sweep indices, and where their summaries go.
+struct Job<'a> {
+    momenta: &'a [Vector3<f64>],
+    indices: &'a [usize],
+    out: &'a mut Vec<Summary<Vector3<f64>>>,
 }
 
 /// What a sweep's batched chunks reuse, one chunk after the other: the batch (its storage of a
