@@ -66,6 +66,15 @@ use lie_groups::{LieGroup, Tau};
 pub trait SymmetricMethod: Integrator {
     /// Whether this instance is symmetric (for [`LiePoisson`] and [`EulerPoincare`]: θ = ½).
     fn is_symmetric(&self) -> bool;
+    /// The rates of the motion its variable steps must resolve ([`crate::DensityScope`]): the
+    /// step density the reversible steps ([`crate::adaptive::ReversibleSteps`]) ask the monitor
+    /// for. Provided: [`DensityScope::Full`](crate::DensityScope::Full); a method made of exact
+    /// flows of the kinetic energy's pieces declares
+    /// [`DensityScope::SpinFollowed`](crate::DensityScope::SpinFollowed), and a composition
+    /// declares its base method's.
+    fn density_scope(&self) -> crate::DensityScope {
+        crate::DensityScope::Full
+    }
 }
 
 /// Saving and restoring the state (t, μ or ξ, g) of an integrator, so that a composite step can
@@ -558,6 +567,10 @@ impl<I: SymmetricMethod + StateSnapshot> SymmetricMethod for Composition<I> {
     /// Symmetric base and palindromic γ (always, by [`Composition::new`]).
     fn is_symmetric(&self) -> bool {
         self.inner.is_symmetric() && self.scheme.is_symmetric()
+    }
+    /// The base method's: each substep is one of its steps.
+    fn density_scope(&self) -> crate::DensityScope {
+        self.inner.density_scope()
     }
 }
 

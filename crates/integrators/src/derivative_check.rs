@@ -181,7 +181,7 @@ pub fn finite_difference_force_derivative<G: LieGroup, S: System<G> + ?Sized>(
     })
 }
 
-/// `(1/ρ) dρ/dt` of the system's step density ([`System::step_density`]) along the
+/// `(1/ρ) dρ/dt` of the system's step density of `scope` ([`System::step_density`]) along the
 /// conservative flow `μ̇ = ad*_ξ μ + F(g)`, `ġ = g ξ`, ξ = ∂h/∂μ, by the central difference
 /// `(ρ(μ + sμ̇, g exp(sξ)) − ρ(μ − sμ̇, g exp(−sξ))) / (2sρ)` with `s = ε^{1/3}/ρ`: the provided
 /// [`System::step_density_rate`] (error ~1e-10 relative for a smooth density). With ρ even in μ
@@ -190,8 +190,9 @@ pub fn finite_difference_step_density_rate<G: LieGroup, S: System<G> + ?Sized>(
     system: &S,
     mu: &G::Algebra,
     g: Option<&G>,
+    scope: crate::DensityScope,
 ) -> f64 {
-    let rho = system.step_density(mu, g);
+    let rho = system.step_density(mu, g, scope);
     if !(rho.is_finite() && rho > 0.0) {
         return f64::NAN;
     }
@@ -204,7 +205,7 @@ pub fn finite_difference_step_density_rate<G: LieGroup, S: System<G> + ?Sized>(
     let at = |sign: f64| {
         let m = mu.axpy(sign * s, &mu_dot);
         let g = g.map(|g| G::exp_compose(g, &xi.scale(sign * s)));
-        system.step_density(&m, g.as_ref())
+        system.step_density(&m, g.as_ref(), scope)
     };
     (at(1.0) - at(-1.0)) / (2.0 * s * rho)
 }

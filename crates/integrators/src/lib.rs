@@ -174,7 +174,7 @@ pub use lie_groups::{self, nalgebra};
 pub use lie_poisson::{CotangentLiftIntegrator, LiePoisson};
 pub use solver::{SolverConfig, SolverKind};
 pub use step_state::RENORMALIZE_AFTER;
-pub use system::{euclidean_norm, System};
+pub use system::{euclidean_norm, DensityScope, System};
 pub use warm_start::WarmStart;
 
 /// The README's example (the crate's page on crates.io), compiled and run as a doctest.

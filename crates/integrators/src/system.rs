@@ -15,6 +15,26 @@
 
 use lie_groups::{LieGroup, Operator, Vector};
 
+/// Which rates of the motion a step density ([`System::step_density`]) counts: what the
+/// method it steers follows exactly whatever the step, it need not resolve.
+///
+/// A method declares its scope ([`crate::SymmetricMethod::density_scope`]); the reversible
+/// variable steps ([`crate::adaptive::ReversibleSteps`]) ask its monitor for the density of that
+/// scope. Only a model with a rate that some methods follow exactly distinguishes the two (a
+/// satellite's spin, `mechanics::RigidBodySe3`); the provided density is the same for both.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DensityScope {
+    /// Every rate of the motion: for a method whose step approximates all of it alike
+    /// (Lie–Poisson and Euler–Poincaré θ = ½, for either τ: their update τ(ξ) with ξ from an
+    /// implicit equation is exact on no rotation with a potential).
+    Full,
+    /// Every rate but the spin about the body's angular momentum Π: while Π stays put in the
+    /// body frame Ω is constant and the body turns about it, a one-parameter subgroup that a
+    /// method made of exact flows of the kinetic energy's pieces follows exactly (the
+    /// splittings' rotation pieces, kinetic–kick's exact free-body flow, their compositions).
+    SpinFollowed,
+}
+
 /// A mechanical system on G with reduced Hamiltonian h(μ) and optional potential V(g).
 ///
 /// To write your own, see docs/custom-systems.md and `examples/custom_system.rs`; check the
@@ -106,15 +126,17 @@ pub trait System<G: LieGroup> {
     /// The step density ρ(μ, g) > 0: the rate, in 1/time, at which the motion changes here, so
     /// that a step of the variable-step drivers is h = ε/ρ for a fixed ε
     /// ([`crate::adaptive::ReversibleSteps`], after Hairer–Söderlind 2005, where ρ = 1/σ and σ
-    /// is their step size function).
+    /// is their step size function), for a method whose step follows what `scope` says
+    /// ([`DensityScope`], declared by the method: [`crate::SymmetricMethod::density_scope`]).
     ///
-    /// The provided form is `|∂h/∂μ| + ω_V(g)`: the size of the body velocity (|Ω| for a rigid
-    /// body) and the potential's frequency `ω_V² = ‖∂²h/∂μ² K(g)‖_max`, K the force derivative
-    /// of [`System::force_derivative`] (for a pendulum of length l, ω_V² = (g/l)|cos θ|), which
-    /// is 0 without a potential or without g. A model overrides it where it knows its own rate
-    /// (an orbit's √(GM/r³)). For the reversibility of the drivers it must be even in μ,
+    /// The provided form is `|∂h/∂μ| + ω_V(g)` for either scope: the size of the body velocity
+    /// (|Ω| for a rigid body) and the potential's frequency `ω_V² = ‖∂²h/∂μ² K(g)‖_max`, K the
+    /// force derivative of [`System::force_derivative`] (for a pendulum of length l, ω_V² =
+    /// (g/l)|cos θ|), which is 0 without a potential or without g. A model overrides it where it
+    /// knows its own rate (an orbit's √(GM/r³)) or a rate that a [`DensityScope::SpinFollowed`]
+    /// method need not resolve. For the reversibility of the drivers it must be even in μ,
     /// ρ(−μ, g) = ρ(μ, g), as the provided form is for a Hamiltonian even in μ.
-    fn step_density(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
+    fn step_density(&self, mu: &G::Algebra, g: Option<&G>, _scope: DensityScope) -> f64 {
         let mut rho = self.velocity(mu).norm();
         if let Some(g) = g.filter(|_| self.has_potential()) {
             let k = self.hessian(mu).compose(&self.force_derivative(g));
@@ -123,15 +145,16 @@ pub trait System<G: LieGroup> {
         rho
     }
     /// `G = (1/ρ) dρ/dt` along the flow of the conservative system, `μ̇ = ad*_ξ μ + F(g)`,
-    /// `ġ = g ξ` (ξ = ∂h/∂μ): the right-hand side `dρ/dτ = G` of the step density in the
-    /// fictitious time τ of Hairer–Söderlind's controller ([`crate::adaptive::ReversibleSteps`]).
-    /// Odd in μ when ρ is even and h is even in μ.
+    /// `ġ = g ξ` (ξ = ∂h/∂μ), for the density of the same `scope`: the right-hand side
+    /// `dρ/dτ = G` of the step density in the fictitious time τ of Hairer–Söderlind's
+    /// controller ([`crate::adaptive::ReversibleSteps`]). Odd in μ when ρ is even and h is even
+    /// in μ.
     ///
     /// Provided by central differences of [`System::step_density`] along the flow
     /// ([`crate::derivative_check::finite_difference_step_density_rate`]: two density
     /// evaluations); a model gives the closed form where ρ is its own.
-    fn step_density_rate(&self, mu: &G::Algebra, g: Option<&G>) -> f64 {
-        crate::derivative_check::finite_difference_step_density_rate(self, mu, g)
+    fn step_density_rate(&self, mu: &G::Algebra, g: Option<&G>, scope: DensityScope) -> f64 {
+        crate::derivative_check::finite_difference_step_density_rate(self, mu, g, scope)
     }
     /// The total energy `E = h(μ) + V(g)`; `g = None` counts V as 0 (only meaningful without a
     /// potential).

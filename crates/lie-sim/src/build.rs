@@ -12,7 +12,7 @@ use crate::model::{Alg, Job, Model};
 use crate::sim::{Adapter, Simulation};
 use crate::stepping::VariableSteps;
 use crate::systems::{System, SystemKind};
-use integrators::System as _;
+use integrators::{DensityScope, System as _};
 
 /// Builds the simulation a scene names: its system with its initial state (g₀ only when
 /// `reconstruct`), advanced by `method`. A method that does not apply to the system is
@@ -85,7 +85,9 @@ pub fn characteristic_rate(system: &System, reconstruct: bool) -> Result<f64, Si
 }
 
 /// The step density ρ(y₀) > 0 at the scene's initial state (`integrators::System::step_density`
-/// of its model): the reversible variable steps start at h = ε/ρ(y₀).
+/// of its model) that leaves out the spin a splitting follows exactly
+/// (`integrators::DensityScope::SpinFollowed`, never above the full one): the reversible
+/// variable steps of a splitting start at h = ε/ρ(y₀).
 pub fn step_density(system: &System, reconstruct: bool) -> Result<f64, SimError> {
     system.dispatch(reconstruct, Density)
 }
@@ -98,7 +100,9 @@ pub fn step_density(system: &System, reconstruct: bool) -> Result<f64, SimError>
 /// model's density leaves out a rate its steps need not resolve (a satellite's spin about Π,
 /// `mechanics::RigidBodySe3`), ρ(y₀) may be far below ω, and ε = hρ(y₀) would start the
 /// ε-ladder where even the coarsest run is finer than the fixed ladder's finest; ε = hω keeps
-/// it the same dimensionless ladder, ε = 1, ½, ¼, … from its top.
+/// it the same dimensionless ladder, ε = 1, ½, ¼, … from its top. A method that declares the full
+/// density (`integrators::DensityScope::Full`, Lie–Poisson θ = ½), whose ρ(y₀) ≥ ω, then starts
+/// at a step at most h: one ε ladder per scene serves every method.
 pub fn epsilon_scale(system: &System, reconstruct: bool) -> Result<f64, SimError> {
     Ok(step_density(system, reconstruct)?.max(characteristic_rate(system, reconstruct)?))
 }
@@ -213,7 +217,9 @@ struct Density;
 impl Job for Density {
     type Out = f64;
     fn run<M: Model>(self, model: &M, mu0: Alg<M::G>, g0: Option<M::G>) -> Result<f64, SimError> {
-        Ok(model.system().step_density(&mu0, g0.as_ref()))
+        Ok(model
+            .system()
+            .step_density(&mu0, g0.as_ref(), DensityScope::SpinFollowed))
     }
 }
 

@@ -41,9 +41,10 @@
 //! maps a method keeps step by step it keeps with any step sequence.
 //!
 //! **The density.** [`System::step_density`] gives ρ (the provided form from the body's velocity
-//! |∂h/∂μ| and the potential's frequency; a model overrides it, e.g. √(|Π × Ω|²/|Π|² + GM/r³)
-//! for a satellite on an orbit, which leaves out the spin about Π that its methods follow
-//! exactly) and [`System::step_density_rate`] gives G (the provided form by central
+//! |∂h/∂μ| and the potential's frequency; a model overrides it, e.g. √(|Ω|² + GM/r³) for a
+//! satellite on an orbit, and √(|Π × Ω|²/|Π|² + GM/r³) for a method that follows the spin about
+//! Π exactly), of the scope the method declares ([`SymmetricMethod::density_scope`],
+//! [`crate::DensityScope`]) and [`System::step_density_rate`] gives G (the provided form by central
 //! differences of ρ along the flow; a model gives the closed form). Any system can be the
 //! monitor, so a user chooses the density by wrapping the model. ε is the accuracy knob: ε/ρ is
 //! the step where ρ is the rate, and the error of an order-p method falls as ε^p.
@@ -97,6 +98,8 @@ pub struct ReversibleSteps<M, S> {
     method: M,
     monitor: S,
     epsilon: f64,
+    /// The method's [`SymmetricMethod::density_scope`].
+    scope: crate::DensityScope,
     /// ρ_n.
     rho: f64,
     /// G(y_n), kept for the next step.
@@ -117,7 +120,8 @@ where
     /// not finite or 0, ρ(y_0) not finite and > 0 or G(y_0) not finite
     /// ([`IntegratorError::InvalidStepDensity`]).
     pub fn new(method: M, monitor: S, epsilon: f64) -> Result<Self, IntegratorError> {
-        let rho = monitor.step_density(&method.momentum(), method.configuration());
+        let scope = method.density_scope();
+        let rho = monitor.step_density(&method.momentum(), method.configuration(), scope);
         Self::resume(method, monitor, epsilon, rho)
     }
 
@@ -141,12 +145,14 @@ where
         }
         let t = method.time();
         let rho = valid(rho, "ρ", t, true)?;
-        let rate = monitor.step_density_rate(&method.momentum(), method.configuration());
+        let scope = method.density_scope();
+        let rate = monitor.step_density_rate(&method.momentum(), method.configuration(), scope);
         let rate = valid(rate, "G = (1/ρ) dρ/dt", t, false)?;
         Ok(Self {
             method,
             monitor,
             epsilon,
+            scope,
             rho,
             rate,
             max_steps: 10_000_000,
@@ -208,8 +214,11 @@ where
         let saved = self.method.snapshot();
         self.method.step(h)?;
         let checked = valid(
-            self.monitor
-                .step_density_rate(&self.method.momentum(), self.method.configuration()),
+            self.monitor.step_density_rate(
+                &self.method.momentum(),
+                self.method.configuration(),
+                self.scope,
+            ),
             "G = (1/ρ) dρ/dt",
             t,
             false,

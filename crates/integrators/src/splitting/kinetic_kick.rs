@@ -155,6 +155,10 @@ impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> SymmetricMethod for KineticKi
     fn is_symmetric(&self) -> bool {
         true
     }
+    /// The spin about Π followed exactly: the kinetic energy's flow is exact.
+    fn density_scope(&self) -> crate::DensityScope {
+        crate::DensityScope::SpinFollowed
+    }
 }
 
 impl<G: LieGroup, S: System<G>, K: KineticFlow<G>> StateSnapshot for KineticKick<G, S, K> {

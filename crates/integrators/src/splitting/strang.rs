@@ -222,6 +222,10 @@ impl<G: LieGroup, S: SplitSystem<G>> SymmetricMethod for Splitting<G, S> {
     fn is_symmetric(&self) -> bool {
         true
     }
+    /// The spin about Π followed exactly: the rotation pieces are exact flows.
+    fn density_scope(&self) -> crate::DensityScope {
+        crate::DensityScope::SpinFollowed
+    }
 }
 
 impl<G: LieGroup, S: SplitSystem<G>> StateSnapshot for Splitting<G, S> {

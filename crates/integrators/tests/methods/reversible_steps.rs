@@ -170,11 +170,16 @@ impl System<So3> for Breaking {
     fn potential_differential(&self, g: &So3) -> Vector3<f64> {
         self.top.potential_differential(g)
     }
-    fn step_density(&self, mu: &Vector3<f64>, g: Option<&So3>) -> f64 {
+    fn step_density(
+        &self,
+        mu: &Vector3<f64>,
+        g: Option<&So3>,
+        scope: integrators::DensityScope,
+    ) -> f64 {
         if mu.x.abs() > self.limit {
             f64::NAN
         } else {
-            self.top.step_density(mu, g)
+            self.top.step_density(mu, g, scope)
         }
     }
 }

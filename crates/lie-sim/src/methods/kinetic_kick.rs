@@ -31,6 +31,9 @@ pub const ROW: Row = Row {
         modified: &[],
         processing: true,
         one_step: false,
+        // Each set of coefficients (`candidates`): Blanes–Moan's, optimised for a kinetic +
+        // potential split, reach a given error in fewer stages than the Kahan–Li compositions
+        // of Strang (docs/work-precision.md, the eccentric orbit's table).
         reversible: &[None],
     },
     family,

@@ -314,14 +314,24 @@ pub fn candidates() -> Vec<MethodSpec> {
                 n.parse::<CompositionScheme>()
                     .unwrap_or_else(|_| panic!("{}: {n} is not a composition scheme", row.name))
             });
-            for &tau in &taus {
-                v.push(MethodSpec {
-                    tau,
-                    theta: symmetric,
-                    composition: composition.clone(),
-                    reversible: true,
-                    ..plain.clone()
-                });
+            // The symmetric configuration of a row with coefficients is each set of them (every
+            // built-in scheme is a palindrome); a composition wraps its Strang configuration.
+            let schemes = if composition.is_none() {
+                coefficients.clone()
+            } else {
+                vec![plain.splitting.clone()]
+            };
+            for s in &schemes {
+                for &tau in &taus {
+                    v.push(MethodSpec {
+                        tau,
+                        theta: symmetric,
+                        composition: composition.clone(),
+                        splitting: s.clone(),
+                        reversible: true,
+                        ..plain.clone()
+                    });
+                }
             }
         }
     }
@@ -348,7 +358,8 @@ pub fn family(m: &MethodSpec) -> &'static Family {
 
 /// How a configuration's series is drawn: the colour of its [`family`]; τ = cayley and the
 /// second of a pair ([`Row::second`]) dashed with hollow markers, the others solid with filled
-/// ones; the marker by θ (0 ▲, ½ ●, 1 ■) or by scheme (order-4 triple jump ▲, McLachlan's ×,
+/// ones; reversible steps + (× for a method's own order-4 and order-6 coefficients, see the
+/// code); the marker by θ (0 ▲, ½ ●, 1 ■) or by scheme (order-4 triple jump ▲, McLachlan's ×,
 /// order 6 ■, order 8 ◆; coefficients ●, ▲, ■ by order; a row's own marker: the exact flow ◆);
 /// the modified Hamiltonians by (θ, order) (½ and 4 ●, 0 and 4 ▲, ½ and 6 ■, 0 and 6 ◆); the
 /// processed methods by scheme (blanes-6 ●, 6-11 ▲, 6-13 ■), dashed as their base, filled for
@@ -371,8 +382,17 @@ pub fn style(m: &MethodSpec) -> SeriesStyle {
     }
     if m.reversible {
         // Reversible variable steps: + in the method's colour, bold for the base method and
-        // thin for a composition of it, dashed (solid for the second of a pair) from order 8.
+        // thin for a composition of it, dashed (solid for the second of a pair) from order 8;
+        // a method's own higher-order coefficients × as their base, filled for order 4.
         let high = m.composition.as_ref().is_some_and(|c| c.order() >= 8);
+        if let Some(order) = m.splitting.as_ref().map(|s| s.order()).filter(|&o| o > 2) {
+            return SeriesStyle {
+                color: family(m).color,
+                dashed: second,
+                marker: Marker::Cross,
+                filled: order == 4,
+            };
+        }
         return SeriesStyle {
             color: family(m).color,
             dashed: second != high,
@@ -461,12 +481,20 @@ mod tests {
             } else {
                 0
             };
+            // The symmetric configuration runs with reversible steps for each set of
+            // coefficients, a composition around the Strang one.
+            let reversible: usize = row
+                .trade
+                .reversible
+                .iter()
+                .map(|c| if c.is_none() { coefficients } else { 1 })
+                .sum();
             let want = taus
                 * (coefficients * thetas
                     + row.trade.compositions.len()
                     + row.trade.modified.len()
                     + processing
-                    + row.trade.reversible.len());
+                    + reversible);
             let got = all.iter().filter(|s| s.method == m).count();
             assert_eq!(got, want, "{m}");
         }

@@ -70,7 +70,8 @@ pub struct Trade {
     /// per step).
     pub one_step: bool,
     /// Configurations also run with reversible variable steps (`integrator.epsilon`, over a
-    /// ladder of ε): the symmetric configuration (`None`) and compositions of it, by name.
+    /// ladder of ε): the symmetric configuration (`None`; for a method that takes coefficients,
+    /// each set of them) and compositions of it, by name.
     pub reversible: &'static [Option<&'static str>],
 }
 

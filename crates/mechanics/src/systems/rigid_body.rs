@@ -7,7 +7,7 @@
 //! Casimir: `C(Π) = |Π|²`.
 
 use integrators::splitting::SplitSystem;
-use integrators::{EulerArnold, IntegratorError, System};
+use integrators::{DensityScope, EulerArnold, IntegratorError, System};
 use lie_groups::{sin_cos, LieGroup, So3};
 use nalgebra::{Matrix3, Vector3};
 
@@ -138,12 +138,12 @@ impl System<So3> for RigidBody {
     fn torque_rate(&self, force: &Vector3<f64>) -> f64 {
         torque_rate(self.inertia(), force)
     }
-    /// `G = (1/ρ) dρ/dt = Ω·Ω̇ / |Ω|²` for the provided density ρ = |Ω|, with
+    /// `G = (1/ρ) dρ/dt = Ω·Ω̇ / |Ω|²` for the provided density ρ = |Ω| (either scope), with
     /// `Ω̇ = 𝕀⁻¹Π̇` and Euler's `Π̇ = ad*_Ω Π` (test `rigid_body_step_density_rate_is_the_closed_form`
     /// against central differences): one cross product, where the provided form takes two
     /// density evaluations at moved states. Odd in Π, as the reversible controller needs.
     #[inline]
-    fn step_density_rate(&self, mu: &Vector3<f64>, _g: Option<&So3>) -> f64 {
+    fn step_density_rate(&self, mu: &Vector3<f64>, _g: Option<&So3>, _: DensityScope) -> f64 {
         let w = self.angular_velocity(mu);
         let w_dot = self.angular_velocity(&So3::ad_dual_apply(&w, mu));
         w.dot(&w_dot) / w.norm_squared()

@@ -43,7 +43,7 @@
 //! conserve L to round-off for every θ and τ.
 
 use integrators::splitting::SplitSystem;
-use integrators::{IntegratorError, System};
+use integrators::{DensityScope, IntegratorError, System};
 use lie_groups::Se3;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
@@ -210,48 +210,54 @@ impl System<Se3> for RigidBodySe3 {
         -gm * self.mass / r - gm * self.inertia().trace() / (2.0 * r2 * r)
             + 1.5 * gm * bib / (r2 * r2 * r)
     }
-    /// For a satellite (with g), `ρ = √(|Π × Ω|²/|Π|² + GM/r³)`: the rate at which the body
-    /// angular momentum Π turns in the body frame under the free motion (the precession of Π
-    /// about the body axes, `Π̇ = Π × Ω` without the torque; 0 at Π = 0, its limit) and the
-    /// orbit's local rate (the mean motion of a circular orbit of radius r = |x|, also the
-    /// rate of the gravity-gradient libration up to a factor √3), so that steps ε/ρ shrink as
-    /// r^{3/2} at periapsis — Hairer–Söderlind's choice σ ∝ r^{3/2} for the Kepler problem.
+    /// For a satellite (with g), `ρ = √(|Ω|² + GM/r³)` ([`DensityScope::Full`]): the body's
+    /// rotation rate and the orbit's local rate (the mean motion of a circular orbit of radius
+    /// r = |x|, also the rate of the gravity-gradient libration up to a factor √3), so that
+    /// steps ε/ρ shrink as r^{3/2} at periapsis — Hairer–Söderlind's choice σ ∝ r^{3/2} for the
+    /// Kepler problem — and stay below the spin's time scale, which a Lie–Poisson step must
+    /// resolve like the rest.
     ///
-    /// The spin about Π itself is left out: while Π stays put in the body frame, Ω is
-    /// constant and the body turns about it at the rate |Ω|, a one-parameter subgroup that
-    /// the splitting's rotation pieces and every update by `exp` (Lie–Poisson with τ = exp)
-    /// follow exactly whatever the step; what a step cannot follow is Π moving in the body
-    /// frame and the orbit. A spinning symmetric body, whose |Ω| is far above both (a 5 rad/s
-    /// spin on an orbit whose rate varies 23×: `examples/scenes/eccentric-orbit.toml`), then
-    /// takes steps that follow the periapsis passages instead of a step set by the spin. The
-    /// Cayley map does not follow the spin exactly, so a τ = cayley method's error grows with
-    /// |Ω| h along the steps this density gives.
+    /// [`DensityScope::SpinFollowed`]: `ρ = √(|Π × Ω|²/|Π|² + GM/r³)`, the rate at which the
+    /// body angular momentum Π turns in the body frame under the free motion (the precession of
+    /// Π about the body axes, `Π̇ = Π × Ω` without the torque; 0 at Π = 0, its limit) and the
+    /// orbit's. The spin about Π itself is left out: while Π stays put in the body frame, Ω is
+    /// constant and the body turns about it at the rate |Ω|, a one-parameter subgroup that the
+    /// splitting's rotation pieces and kinetic–kick's exact flow follow whatever the step; what
+    /// a step cannot follow is Π moving in the body frame and the orbit. A spinning symmetric
+    /// body, whose |Ω| is far above both (a 5 rad/s spin on an orbit whose rate varies 23×:
+    /// `examples/scenes/eccentric-orbit.toml`), then takes steps that follow the periapsis
+    /// passages instead of a step set by the spin. |Π × Ω|/|Π| ≤ |Ω|: this density is never
+    /// above the full one.
     ///
-    /// Even in μ (Π × Ω and |Π|² are). The free body, or a satellite without g: |Ω| (its
-    /// motion has no other rate, and ρ must be > 0).
-    fn step_density(&self, mu: &Vector6<f64>, g: Option<&Se3>) -> f64 {
+    /// Even in μ (|Ω|², |Π × Ω|² and |Π|² are). The free body, or a satellite
+    /// without g: |Ω| for either scope (its motion has no other rate, and ρ must be > 0).
+    fn step_density(&self, mu: &Vector6<f64>, g: Option<&Se3>, scope: DensityScope) -> f64 {
         let (pi, _) = split(mu);
         let w = self.body.velocity(&pi);
         match (self.gm, g) {
             (Some(gm), Some(g)) => {
                 let r2 = g.translation().norm_squared();
-                (precession_squared(&pi, &w) + gm / (r2 * r2.sqrt())).sqrt()
+                let body = match scope {
+                    DensityScope::Full => w.norm_squared(),
+                    DensityScope::SpinFollowed => precession_squared(&pi, &w),
+                };
+                (body + gm / (r2 * r2.sqrt())).sqrt()
             }
             _ => w.norm(),
         }
     }
-    /// `G = (1/ρ) dρ/dt = (½ d/dt(|u|²/|Π|²) − (3/2)(GM/r³)(x·ẋ)/r²)/ρ²` for the satellite,
-    /// with `u = Π × Ω`,
+    /// `G = (1/ρ) dρ/dt = (½ d/dt b² − (3/2)(GM/r³)(x·ẋ)/r²)/ρ²` for the satellite, with
+    /// b² = |Ω|² (full) or |u|²/|Π|², `u = Π × Ω` (spin followed):
     ///
     /// ```text
-    /// ½ d/dt(|u|²/|Π|²) = u·u̇/|Π|² − (|u|²/|Π|⁴) Π·Π̇,     u̇ = Π̇ × Ω + Π × Ω̇,
-    /// Π̇ = Π × Ω + τ,     Ω̇ = 𝕀⁻¹Π̇,     x·ẋ = x·RP/m
+    /// ½ d/dt |Ω|² = Ω·Ω̇,     ½ d/dt(|u|²/|Π|²) = u·u̇/|Π|² − (|u|²/|Π|⁴) Π·Π̇,
+    /// u̇ = Π̇ × Ω + Π × Ω̇,     Π̇ = Π × Ω + τ,     Ω̇ = 𝕀⁻¹Π̇,     x·ẋ = x·RP/m
     /// ```
     ///
     /// (τ the gravity-gradient torque; the precession's terms are 0 at Π = 0, their limit).
     /// `(Ω·Ω̇)/|Ω|²` for the free body. Odd in μ (u, |Π|² and Π̇ are even, Π, Ω, u̇ and ẋ odd).
     /// Test `satellite_step_density_rate_matches_finite_differences`.
-    fn step_density_rate(&self, mu: &Vector6<f64>, g: Option<&Se3>) -> f64 {
+    fn step_density_rate(&self, mu: &Vector6<f64>, g: Option<&Se3>, scope: DensityScope) -> f64 {
         let (pi, p) = split(mu);
         let w = self.body.velocity(&pi);
         let (Some(gm), Some(g)) = (self.gm, g) else {
@@ -260,14 +266,22 @@ impl System<Se3> for RigidBodySe3 {
         };
         let pi_dot = pi.cross(&w) + self.gravity_gradient_torque(g);
         let w_dot = self.body.velocity(&pi_dot);
-        let pi2 = pi.norm_squared();
         let (mut rho2, mut half_rate) = (0.0, 0.0);
-        if pi2 > 0.0 {
-            let u = pi.cross(&w);
-            let u_dot = pi_dot.cross(&w) + pi.cross(&w_dot);
-            let u2 = u.norm_squared() / pi2;
-            rho2 = u2;
-            half_rate = (u.dot(&u_dot) - u2 * pi.dot(&pi_dot)) / pi2;
+        match scope {
+            DensityScope::Full => {
+                rho2 = w.norm_squared();
+                half_rate = w.dot(&w_dot);
+            }
+            DensityScope::SpinFollowed => {
+                let pi2 = pi.norm_squared();
+                if pi2 > 0.0 {
+                    let u = pi.cross(&w);
+                    let u_dot = pi_dot.cross(&w) + pi.cross(&w_dot);
+                    let u2 = u.norm_squared() / pi2;
+                    rho2 = u2;
+                    half_rate = (u.dot(&u_dot) - u2 * pi.dot(&pi_dot)) / pi2;
+                }
+            }
         }
         let x = g.translation();
         let r2 = x.norm_squared();

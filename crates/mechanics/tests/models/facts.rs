@@ -373,14 +373,15 @@ fn rigid_body_step_density_rate_is_the_closed_form() {
     ];
     for body in &bodies {
         for mu in &states {
-            let closed = body.step_density_rate(mu, None);
-            let fd = finite_difference_step_density_rate(body, mu, None);
-            let scale = body.step_density(mu, None);
+            let scope = integrators::DensityScope::Full;
+            let closed = body.step_density_rate(mu, None, scope);
+            let fd = finite_difference_step_density_rate(body, mu, None, scope);
+            let scale = body.step_density(mu, None, scope);
             assert!(
                 (closed - fd).abs() <= 1e-6 * scale.max(fd.abs()),
                 "G = {closed:e}, central differences {fd:e}"
             );
-            assert_eq!(body.step_density_rate(&-mu, None), -closed);
+            assert_eq!(body.step_density_rate(&-mu, None, scope), -closed);
         }
     }
 }
