@@ -49,6 +49,25 @@ pub struct Batch<K: Kernel> {
 }
 
 /// A row-major rotation matrix as its nine entries.
+/// Checks a batch's bodies (some momenta; one attitude per body or one for all) and returns body
+/// i's attitude rows.
+fn bodies<'a>(
+    momenta: &[Vector3<f64>],
+    attitudes: &'a [So3],
+) -> Result<impl Fn(usize) -> [f64; 9] + 'a, BatchError> {
+    if momenta.is_empty() {
+        return Err(BatchError::Empty { what: "momenta" });
+    }
+    if attitudes.len() != momenta.len() && attitudes.len() != 1 {
+        return Err(BatchError::LengthMismatch {
+            what: "attitudes",
+            got: attitudes.len(),
+            expected: momenta.len(),
+        });
+    }
+    Ok(move |i: usize| rows(&attitudes[if attitudes.len() == 1 { 0 } else { i }]))
+}
+
 fn rows(r: &So3) -> [f64; 9] {
     let m = r.as_matrix();
     core::array::from_fn(|i| m[(i / 3, i % 3)])
@@ -66,17 +85,7 @@ impl<K: Kernel> Batch<K> {
         attitudes: &[So3],
         level: Level,
     ) -> Result<Self, BatchError> {
-        if momenta.is_empty() {
-            return Err(BatchError::Empty { what: "momenta" });
-        }
-        if attitudes.len() != momenta.len() && attitudes.len() != 1 {
-            return Err(BatchError::LengthMismatch {
-                what: "attitudes",
-                got: attitudes.len(),
-                expected: momenta.len(),
-            });
-        }
-        let r = |i: usize| rows(&attitudes[if attitudes.len() == 1 { 0 } else { i }]);
+        let r = bodies(momenta, attitudes)?;
         Self::build(kernel, momenta.len(), |i| (momenta[i].into(), r(i)), level)
     }
 
@@ -92,17 +101,7 @@ impl<K: Kernel> Batch<K> {
         momenta: &[Vector3<f64>],
         attitudes: &[So3],
     ) -> Result<(), BatchError> {
-        if momenta.is_empty() {
-            return Err(BatchError::Empty { what: "momenta" });
-        }
-        if attitudes.len() != momenta.len() && attitudes.len() != 1 {
-            return Err(BatchError::LengthMismatch {
-                what: "attitudes",
-                got: attitudes.len(),
-                expected: momenta.len(),
-            });
-        }
-        let r = |i: usize| rows(&attitudes[if attitudes.len() == 1 { 0 } else { i }]);
+        let r = bodies(momenta, attitudes)?;
         fill(&self.kernel, &mut self.groups, momenta.len(), |i| {
             (momenta[i].into(), r(i))
         })?;
