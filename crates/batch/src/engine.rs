@@ -94,6 +94,11 @@ pub trait Kernel: Sync + Send + Clone {
     /// Whether the attitude is renormalized every [`crate::RENORMALIZE_EVERY`] steps (the
     /// splittings), or kept on the group by the method itself (a unit quaternion).
     fn renormalizes(&self) -> bool;
+    /// The steps between renormalizations when [`Kernel::renormalizes`]: the scalar method's
+    /// cadence (by default the splittings' [`crate::RENORMALIZE_EVERY`]).
+    fn renormalize_every(&self) -> u64 {
+        crate::RENORMALIZE_EVERY as u64
+    }
     /// Runs the step loop of `schedule` over `groups` (the engine's `run`); a method with
     /// variants (axes, a field) picks the one with its constants fixed here, once per run.
     fn run_schedule(
@@ -159,7 +164,7 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
                 let alive = F::load(s, &group[(c + Book::Alive as usize) * GROUP + off..]).eq(one);
                 let mut new = st;
                 let inner0 = sch.inner_before + k * sch.subs.len() as u64;
-                let every = crate::RENORMALIZE_EVERY as u64;
+                let every = kernel.renormalize_every();
                 let renorms = kernel.renormalizes();
                 if let [h] = sch.subs {
                     // One sub-step (no composition): straight-line code.

@@ -8,7 +8,9 @@
 //!   `φ⁰_{h/2} ∘ φ¹_h ∘ φ⁰_{h/2}`, Fassò 2003; in a field the kicks `K_{h/2}` outside,
 //!   McLachlan 1993), with R, and under any `CompositionScheme` ([`Batch::with_composition`]);
 //!   within `4 (1 + θ)` ulps of the scalar step (θ the step's largest rotation angle);
-//! - [`QuaternionRk4`]: RK4 on (q, Π) as `integrators::QuaternionRk4`, bit for bit.
+//! - [`QuaternionRk4`]: RK4 on (q, Π) as `integrators::QuaternionRk4`, bit for bit;
+//! - [`Rkmk4`]: Runge–Kutta–Munthe-Kaas of order 4 on SO(3) × so(3)* as `integrators::Rkmk4`,
+//!   bit for bit wherever a step's rotations stay below π/2.
 //!
 //! One vector operation advances 8 bodies on AVX-512, 4 on AVX2, 1 otherwise ([`Level`],
 //! detected at run time through `pulp`, or forced). The sines and cosines of the rotations come
@@ -63,6 +65,7 @@ mod lanes;
 mod level;
 mod model;
 mod rk4;
+mod rkmk4;
 mod splitting;
 pub mod trig;
 
@@ -72,6 +75,7 @@ pub use error::BatchError;
 pub use level::Level;
 pub use model::BodyModel;
 pub use rk4::{QuaternionRk4, Rk4State};
+pub use rkmk4::{Rkmk4, Rkmk4State};
 pub use splitting::{Strang, StrangState};
 
 /// The splittings bring the attitude back onto SO(3) every this many steps, as the scalar
@@ -82,6 +86,8 @@ pub const RENORMALIZE_EVERY: u32 = integrators::splitting::RENORMALIZE_EVERY;
 pub type StrangBatch = Batch<Strang>;
 /// A batch stepped by RK4 on (q, Π).
 pub type Rk4Batch = Batch<QuaternionRk4>;
+/// A batch stepped by RKMK4.
+pub type Rkmk4Batch = Batch<Rkmk4>;
 
 /// The README's example (the crate's page on crates.io), compiled and run as a doctest.
 #[cfg(doctest)]

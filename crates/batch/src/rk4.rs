@@ -48,7 +48,7 @@ pub struct Rk4State<S: Simd> {
 
 /// `a × b` as nalgebra writes it.
 #[inline(always)]
-fn cross<S: Simd>(a: [F<S>; 3], b: [F<S>; 3]) -> [F<S>; 3] {
+pub(crate) fn cross<S: Simd>(a: [F<S>; 3], b: [F<S>; 3]) -> [F<S>; 3] {
     [
         a[1] * b[2] - a[2] * b[1],
         a[2] * b[0] - a[0] * b[2],
@@ -102,17 +102,28 @@ impl QuaternionRk4 {
         ];
         (scale_n(&p, 0.5), dpi)
     }
-    /// The energy `½ Π·Ω (+ m g χ·Γ)` and Casimir |Π|² as the scalar `System` forms them.
+    /// The energy and Casimir of the body ([`body_energy`]).
     #[inline(always)]
     fn energy<S: Simd>(&self, pi: [F<S>; 3], g: Option<[F<S>; 3]>) -> (F<S>, Option<F<S>>) {
-        let a = self.body.inv_moments;
-        let om = [pi[0] * a[0], pi[1] * a[1], pi[2] * a[2]];
-        let kinetic = (pi[0] * om[0] + pi[1] * om[1] + pi[2] * om[2]) * 0.5;
-        match (self.body.field, g) {
-            (Some(m), Some(g)) => (kinetic + (g[0] * m[0] + g[1] * m[1] + g[2] * m[2]), None),
-            (Some(_), None) => (kinetic, None),
-            (None, _) => (kinetic, Some(pi[0] * pi[0] + pi[1] * pi[1] + pi[2] * pi[2])),
-        }
+        body_energy(&self.body, pi, g)
+    }
+}
+
+/// The energy `½ Π·Ω (+ m g χ·Γ)` and Casimir |Π|² of `body` at Π and Γ = Rᵀe₃ as the scalar
+/// `System` forms them (no fused multiply-add).
+#[inline(always)]
+pub(crate) fn body_energy<S: Simd>(
+    body: &BodyModel,
+    pi: [F<S>; 3],
+    g: Option<[F<S>; 3]>,
+) -> (F<S>, Option<F<S>>) {
+    let a = body.inv_moments;
+    let om = [pi[0] * a[0], pi[1] * a[1], pi[2] * a[2]];
+    let kinetic = (pi[0] * om[0] + pi[1] * om[1] + pi[2] * om[2]) * 0.5;
+    match (body.field, g) {
+        (Some(m), Some(g)) => (kinetic + (g[0] * m[0] + g[1] * m[1] + g[2] * m[2]), None),
+        (Some(_), None) => (kinetic, None),
+        (None, _) => (kinetic, Some(pi[0] * pi[0] + pi[1] * pi[1] + pi[2] * pi[2])),
     }
 }
 

@@ -34,19 +34,19 @@ use crate::{BatchError, Level};
 use pulp::{Simd, WithSimd};
 
 /// sin r ≈ r + S₁r³ + … + S₆r¹³ on |r| ≤ π/4 (fdlibm `__kernel_sin`).
-const S1: f64 = f64::from_bits(0xBFC5_5555_5555_5549);
-const S2: f64 = f64::from_bits(0x3F81_1111_1110_F8A6);
-const S3: f64 = f64::from_bits(0xBF2A_01A0_19C1_61D5);
-const S4: f64 = f64::from_bits(0x3EC7_1DE3_57B1_FE7D);
-const S5: f64 = f64::from_bits(0xBE5A_E5E6_8A2B_9CEB);
-const S6: f64 = f64::from_bits(0x3DE5_D93A_5ACF_D57C);
+pub(crate) const S1: f64 = f64::from_bits(0xBFC5_5555_5555_5549);
+pub(crate) const S2: f64 = f64::from_bits(0x3F81_1111_1110_F8A6);
+pub(crate) const S3: f64 = f64::from_bits(0xBF2A_01A0_19C1_61D5);
+pub(crate) const S4: f64 = f64::from_bits(0x3EC7_1DE3_57B1_FE7D);
+pub(crate) const S5: f64 = f64::from_bits(0xBE5A_E5E6_8A2B_9CEB);
+pub(crate) const S6: f64 = f64::from_bits(0x3DE5_D93A_5ACF_D57C);
 /// cos r ≈ 1 − r²/2 + C₁r⁴ + … + C₆r¹⁴ on |r| ≤ π/4 (fdlibm `__kernel_cos`).
-const C1: f64 = f64::from_bits(0x3FA5_5555_5555_554C);
-const C2: f64 = f64::from_bits(0xBF56_C16C_16C1_5177);
-const C3: f64 = f64::from_bits(0x3EFA_01A0_19CB_1590);
-const C4: f64 = f64::from_bits(0xBE92_7E4F_809C_52AD);
-const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4);
-const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4);
+pub(crate) const C1: f64 = f64::from_bits(0x3FA5_5555_5555_554C);
+pub(crate) const C2: f64 = f64::from_bits(0xBF56_C16C_16C1_5177);
+pub(crate) const C3: f64 = f64::from_bits(0x3EFA_01A0_19CB_1590);
+pub(crate) const C4: f64 = f64::from_bits(0xBE92_7E4F_809C_52AD);
+pub(crate) const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4);
+pub(crate) const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4);
 
 /// 2/π rounded.
 const INV_PIO2: f64 = f64::from_bits(0x3FE4_5F30_6DC9_C883);

@@ -4,7 +4,9 @@
 
 mod common;
 
-use batch::{Batch, BatchError, BodyModel, Kernel, LaneStatus, Level, QuaternionRk4, Strang};
+use batch::{
+    Batch, BatchError, BodyModel, Kernel, LaneStatus, Level, QuaternionRk4, Rkmk4, Strang,
+};
 use common::{bodies, state, tops};
 use integrators::ensemble::{Execution, Status};
 use integrators::CompositionScheme;
@@ -84,15 +86,17 @@ fn same_bits_everywhere<K: Kernel>(kernel: K, what: &str) {
 }
 
 /// A body's bits are the same whatever its lane, the batch size (1, 3, 8, 1000), the level and
-/// sequential or threaded stepping: Strang and RK4, free and in a field.
+/// sequential or threaded stepping: Strang, RK4 and RKMK4, free and in a field.
 #[test]
 fn a_body_has_the_same_bits_in_every_lane_size_level_and_thread_count() {
     let free = BodyModel::free(&bodies()[0]).unwrap();
     let field = BodyModel::heavy_top(&tops()[1]).unwrap();
     same_bits_everywhere(Strang::new(free.clone()), "Strang free");
     same_bits_everywhere(Strang::new(field.clone()), "Strang field");
-    same_bits_everywhere(QuaternionRk4::new(free), "RK4 free");
-    same_bits_everywhere(QuaternionRk4::new(field), "RK4 field");
+    same_bits_everywhere(QuaternionRk4::new(free.clone()), "RK4 free");
+    same_bits_everywhere(QuaternionRk4::new(field.clone()), "RK4 field");
+    same_bits_everywhere(Rkmk4::new(free), "RKMK4 free");
+    same_bits_everywhere(Rkmk4::new(field), "RKMK4 field");
 }
 
 fn fails_alone<K: Kernel>(kernel: K, what: &str) {
@@ -101,7 +105,7 @@ fn fails_alone<K: Kernel>(kernel: K, what: &str) {
     let pis: Vec<_> = states.iter().map(|s| s.0).collect();
     let rs: Vec<_> = states.iter().map(|s| s.1).collect();
     let clean = run(&kernel, &pis, &rs, Level::detect(), Execution::Sequential);
-    // body 5 starts with a NaN; body 10 overflows in its first step (RK4: Π × Ω), or turns by
+    // body 5 starts with a NaN; body 10 overflows in its first step (RK4, RKMK4: Π × Ω), or turns by
     // more than 2²⁸ rad (Strang)
     let mut bad = pis.clone();
     bad[5][1] = f64::NAN;
@@ -140,8 +144,10 @@ fn a_bad_body_fails_alone() {
     let field = BodyModel::heavy_top(&tops()[0]).unwrap();
     fails_alone(Strang::new(free.clone()), "Strang free");
     fails_alone(Strang::new(field.clone()), "Strang field");
-    fails_alone(QuaternionRk4::new(free), "RK4 free");
-    fails_alone(QuaternionRk4::new(field), "RK4 field");
+    fails_alone(QuaternionRk4::new(free.clone()), "RK4 free");
+    fails_alone(QuaternionRk4::new(field.clone()), "RK4 field");
+    fails_alone(Rkmk4::new(free), "RKMK4 free");
+    fails_alone(Rkmk4::new(field), "RKMK4 field");
 }
 
 /// Zero bodies, arrays of different lengths, an unusable step or a body out of range: a clear
