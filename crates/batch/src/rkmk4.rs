@@ -2,7 +2,7 @@
 //! the scalar `integrators::Rkmk4`, in its order.
 
 use crate::engine::Kernel;
-use crate::lanes::{k, load_n, select_n, splat_n, store_n, F, M};
+use crate::lanes::{k, load_n, scale_n, select_n, splat_n, store_n, F, M};
 use crate::rk4::{body_energy, cross};
 use crate::splitting::finite_all;
 use crate::trig::{sin_cos, C1, C2, C3, C4, C5, C6, S1, S2, S3, S4, S5, S6};
@@ -101,7 +101,26 @@ fn exp_coeffs<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
             ],
         ),
     );
-    // half_sinc_cos(θ²/4), operation for operation.
+    let small = t2.lt(k(s, SERIES_SQ));
+    // Every lane below θ = 0.1 (the usual step): the series alone. Otherwise each lane takes its
+    // own branch by a select, so a lane's bits never depend on which path its neighbours took.
+    if !small.not().any() {
+        return series;
+    }
+    let (q, ch) = half_angle(t2);
+    let q2 = q * 2.0;
+    (
+        small.select(series.0, q2 * ch),
+        small.select(series.1, q2 * q),
+    )
+}
+
+/// `(sin h/θ, cos h)` for h = θ/2 from θ² (the branches of `exp_coeffs` beyond the series): up to
+/// θ = π/2 `lie_groups`' `half_sinc_cos(θ²/4)` operation for operation, beyond it from √θ² and
+/// the lanes' [`sin_cos`] (only when some lane is there).
+#[inline(always)]
+fn half_angle<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
+    let s = t2.s;
     let z = t2 * 0.25;
     let w = z * z;
     let rs = (k(s, S2) + z * (k(s, S3) + z * S4)) + (z * w) * (k(s, S5) + z * S6);
@@ -119,12 +138,7 @@ fn exp_coeffs<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
         q = mid.select(q, sh * inv_t);
         ch = mid.select(ch, chg);
     }
-    let q2 = q * 2.0;
-    let small = t2.lt(k(s, SERIES_SQ));
-    (
-        small.select(series.0, q2 * ch),
-        small.select(series.1, q2 * q),
-    )
+    (q, ch)
 }
 
 /// `exp(ω̂) − I = aω̂ + bω̂²` entry by entry (row-major), as `So3`'s `rodrigues_increment`.
@@ -148,17 +162,45 @@ fn increment<S: Simd>(w: [F<S>; 3]) -> [F<S>; 9] {
     ]
 }
 
+// No closures on the lanes' path (`array::from_fn`, `map`, `then`): a closure is compiled
+// without the instruction set of the function that calls it unless it is inlined, and then
+// passes its vectors through memory; the loops below are unrolled in place.
+
 /// Row `i` of `R + R D` (`So3::exp_compose`: `R + mul3(R, D)`).
 #[inline(always)]
 fn compose_row<S: Simd>(r: &[F<S>; 9], d: &[F<S>; 9], i: usize) -> [F<S>; 3] {
     let (r0, r1, r2) = (r[3 * i], r[3 * i + 1], r[3 * i + 2]);
-    core::array::from_fn(|j| r[3 * i + j] + ((r0 * d[j] + r1 * d[3 + j]) + r2 * d[6 + j]))
+    let mut o = [r0; 3];
+    for j in 0..3 {
+        o[j] = r[3 * i + j] + ((r0 * d[j] + r1 * d[3 + j]) + r2 * d[6 + j]);
+    }
+    o
 }
 
 /// `a + b t` entry by entry (`Vector::axpy`: `a + b · t`).
 #[inline(always)]
 fn axpy<S: Simd>(a: [F<S>; 3], t: f64, b: [F<S>; 3]) -> [F<S>; 3] {
-    core::array::from_fn(|i| a[i] + b[i] * t)
+    let mut o = a;
+    for i in 0..3 {
+        o[i] = a[i] + b[i] * t;
+    }
+    o
+}
+
+/// `a + 2 (b + c) + d` entry by entry, as the scalar step sums its stages.
+#[inline(always)]
+fn stage_sum<S: Simd>(a: [F<S>; 3], b: [F<S>; 3], c: [F<S>; 3], d: [F<S>; 3]) -> [F<S>; 3] {
+    let mut o = a;
+    for i in 0..3 {
+        o[i] = (a[i] + (b[i] + c[i]) * 2.0) + d[i];
+    }
+    o
+}
+
+/// The vertical Γ = Rᵀe₃ of the stage attitude `R exp(Θ)`: its third row.
+#[inline(always)]
+fn stage_vertical<S: Simd>(r: &[F<S>; 9], theta: [F<S>; 3]) -> [F<S>; 3] {
+    compose_row(r, &increment(theta), 2)
 }
 
 /// `u · v` as nalgebra's `dot` sums it (in index order, no fused multiply-add).
@@ -173,8 +215,17 @@ fn normalize<S: Simd>(r: &mut [F<S>; 9]) {
     let s = r[0].s;
     let (c0, c1, c2) = ([r[0], r[3], r[6]], [r[1], r[4], r[7]], [r[2], r[5], r[8]]);
     let (d01, d02, d12) = (dot(c0, c1) * -0.5, dot(c0, c2) * -0.5, dot(c1, c2) * -0.5);
-    let diag = |c: [F<S>; 3]| k(s, 1.5) - dot(c, c) * 0.5;
-    let m = [diag(c0), d01, d02, d01, diag(c1), d12, d02, d12, diag(c2)];
+    let m = [
+        k(s, 1.5) - dot(c0, c0) * 0.5,
+        d01,
+        d02,
+        d01,
+        k(s, 1.5) - dot(c1, c1) * 0.5,
+        d12,
+        d02,
+        d12,
+        k(s, 1.5) - dot(c2, c2) * 0.5,
+    ];
     let old = *r;
     for i in 0..3 {
         let (r0, r1, r2) = (old[3 * i], old[3 * i + 1], old[3 * i + 2]);
@@ -209,29 +260,43 @@ impl Rkmk4 {
     ) {
         let half = 0.5 * h;
         let (pi, r) = (st.pi, st.r);
-        // The vertical Γ = Rᵀe₃ of R_k exp(Θ): the third row of the stage attitude.
-        let vertical = |theta: [F<S>; 3]| FIELD.then(|| compose_row(&r, &increment(theta), 2));
-        let g1 = FIELD.then(|| [r[6], r[7], r[8]]);
+        // Γᵢ = Rᵢᵀe₃ of the stage attitudes Rᵢ = R_k exp(Θᵢ), in a field only.
+        let g1 = if FIELD {
+            Some([r[6], r[7], r[8]])
+        } else {
+            None
+        };
         let (x1, l1) = self.rates(pi, g1);
-        let (x2, l2) = self.rates(axpy(pi, half, l1), vertical(x1.map(|v| v * half)));
-        let g3 = FIELD.then(|| {
-            let t3 = axpy(x2, 0.25 * h, cross(x1, x2)).map(|v| v * half);
-            compose_row(&r, &increment(t3), 2)
-        });
+        let g2 = if FIELD {
+            Some(stage_vertical(&r, scale_n(&x1, half)))
+        } else {
+            None
+        };
+        let (x2, l2) = self.rates(axpy(pi, half, l1), g2);
+        let g3 = if FIELD {
+            let t3 = scale_n(&axpy(x2, 0.25 * h, cross(x1, x2)), half);
+            Some(stage_vertical(&r, t3))
+        } else {
+            None
+        };
         let (x3, l3) = self.rates(axpy(pi, half, l2), g3);
-        let (x4, l4) = self.rates(axpy(pi, h, l3), vertical(x3.map(|v| v * h)));
+        let g4 = if FIELD {
+            Some(stage_vertical(&r, scale_n(&x3, h)))
+        } else {
+            None
+        };
+        let (x4, l4) = self.rates(axpy(pi, h, l3), g4);
         let h6 = h / 6.0;
-        let sum: [F<S>; 3] = core::array::from_fn(|i| (x1[i] + (x2[i] + x3[i]) * 2.0) + x4[i]);
-        let theta = axpy(sum, 0.5 * h, cross(x1, x4)).map(|v| v * h6);
-        let rate: [F<S>; 3] = core::array::from_fn(|i| (l1[i] + (l2[i] + l3[i]) * 2.0) + l4[i]);
-        st.pi = axpy(pi, h6, rate);
+        let sum = stage_sum(x1, x2, x3, x4);
+        let theta = scale_n(&axpy(sum, 0.5 * h, cross(x1, x4)), h6);
+        st.pi = axpy(pi, h6, stage_sum(l1, l2, l3, l4));
         let d = increment(theta);
-        let rows = [
-            compose_row(&r, &d, 0),
-            compose_row(&r, &d, 1),
-            compose_row(&r, &d, 2),
-        ];
-        st.r = core::array::from_fn(|e| rows[e / 3][e % 3]);
+        for i in 0..3 {
+            let row = compose_row(&r, &d, i);
+            st.r[3 * i] = row[0];
+            st.r[3 * i + 1] = row[1];
+            st.r[3 * i + 2] = row[2];
+        }
         if renormalize {
             normalize(&mut st.r);
         }
@@ -291,7 +356,11 @@ impl Kernel for Rkmk4 {
     }
     #[inline(always)]
     fn observe<S: Simd>(&self, st: &Rkmk4State<S>) -> (F<S>, Option<F<S>>) {
-        let g = self.body.field.map(|_| [st.r[6], st.r[7], st.r[8]]);
+        let g = if self.body.field.is_some() {
+            Some([st.r[6], st.r[7], st.r[8]])
+        } else {
+            None
+        };
         body_energy(&self.body, st.pi, g)
     }
     fn has_casimir(&self) -> bool {
