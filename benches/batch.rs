@@ -6,11 +6,11 @@
 //! Groups (criterion's throughput is in bodies, so its `elem/s` are body-steps per second):
 //! - `batch/free_body`: 𝕀 = diag(1, 2, 3), 1024 bodies with |Π| = 1 drawn on the sphere, random
 //!   attitudes, h = 0.01, one step of every body per iteration: the scalar library's Strang step
-//!   (`Splitting`, with R) and `QuaternionRk4`, the hand-written NO_SQUISH and RK4, and the
-//!   batched Strang and RK4 on each level this CPU runs (`avx512`, `avx2` forced on an AVX-512
-//!   machine, `scalar`).
-//! - `batch/field`: the same bodies as heavy tops (m g χ = (0.15, −0.3, 0.75)): scalar Strang and
-//!   RK4, hand-written RK4, batched Strang and RK4 per level.
+//!   (`Splitting`, with R), `QuaternionRk4` and `Rkmk4`, the hand-written NO_SQUISH and RK4, and
+//!   the batched Strang, RK4 and RKMK4 on each level this CPU runs (`avx512`, `avx2` forced on an
+//!   AVX-512 machine, `scalar`).
+//! - `batch/field`: the same bodies as heavy tops (m g χ = (0.15, −0.3, 0.75)): scalar Strang,
+//!   RK4 and RKMK4, hand-written RK4, batched Strang, RK4 and RKMK4 per level.
 //! - `batch/size`: the batched Strang step (widest level) for N = 64 … 4·10⁶ bodies, one step of
 //!   all of them per iteration, which streams the state (13 + 7 doubles a body) through the
 //!   caches: where the memory bandwidth takes over; and `run/N` — 64 steps per call, each block
@@ -21,12 +21,12 @@
 //! `cargo bench -p lie-integrators --bench batch -- --warm-up-time 1 --measurement-time 2`.
 //! The figures and the flop-and-sincos bound are in docs/benchmarks.md.
 
-use batch::{Batch, BodyModel, Level, QuaternionRk4 as BatchRk4, Strang};
+use batch::{Batch, BodyModel, Level, QuaternionRk4 as BatchRk4, Rkmk4 as BatchRkmk4, Strang};
 use criterion::measurement::WallTime;
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion, Throughput};
 use integrators::ensemble::sphere_point;
 use integrators::splitting::Splitting;
-use integrators::{Integrator, QuaternionRk4};
+use integrators::{Integrator, QuaternionRk4, Rkmk4};
 use lie_groups::{LieGroup, So3};
 use mechanics::{HeavyTop, RigidBody};
 use nalgebra::{UnitQuaternion, Vector3};
@@ -111,6 +111,10 @@ fn free_body(c: &mut Criterion) {
         .map(|i| QuaternionRk4::new(body.clone(), pis[i], Some(rs[i])).expect("rk4"))
         .collect();
     scalar_steps(&mut g, "scalar/rk4", rk4);
+    let rkmk4: Vec<_> = (0..N)
+        .map(|i| Rkmk4::new(body.clone(), pis[i], Some(rs[i])).expect("rkmk4"))
+        .collect();
+    scalar_steps(&mut g, "scalar/rkmk4", rkmk4);
     let quat = |r: &So3| UnitQuaternion::from(*r).into_inner();
     let mut rotors: Vec<NoSquish> = (0..N)
         .map(|i| {
@@ -144,7 +148,8 @@ fn free_body(c: &mut Criterion) {
         &pis,
         &rs,
     );
-    batch_steps(&mut g, "batch/rk4", BatchRk4::new(model), &pis, &rs);
+    batch_steps(&mut g, "batch/rk4", BatchRk4::new(model.clone()), &pis, &rs);
+    batch_steps(&mut g, "batch/rkmk4", BatchRkmk4::new(model), &pis, &rs);
     g.finish();
 }
 
@@ -161,6 +166,10 @@ fn field(c: &mut Criterion) {
         .map(|i| QuaternionRk4::new(top.clone(), pis[i], Some(rs[i])).expect("rk4"))
         .collect();
     scalar_steps(&mut g, "scalar/rk4", rk4);
+    let rkmk4: Vec<_> = (0..N)
+        .map(|i| Rkmk4::new(top.clone(), pis[i], Some(rs[i])).expect("rkmk4"))
+        .collect();
+    scalar_steps(&mut g, "scalar/rkmk4", rkmk4);
     let mut hand: Vec<HandRk4<true>> = (0..N)
         .map(|i| HandRk4::new(MOMENTS, mgchi(), pis[i], rs[i].as_matrix()))
         .collect();
@@ -179,7 +188,8 @@ fn field(c: &mut Criterion) {
         &pis,
         &rs,
     );
-    batch_steps(&mut g, "batch/rk4", BatchRk4::new(model), &pis, &rs);
+    batch_steps(&mut g, "batch/rk4", BatchRk4::new(model.clone()), &pis, &rs);
+    batch_steps(&mut g, "batch/rkmk4", BatchRkmk4::new(model), &pis, &rs);
     g.finish();
 }
 

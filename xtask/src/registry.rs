@@ -1556,7 +1556,7 @@ pub fn all() -> Vec<Generator> {
         },
         Generator {
             name: "bench-batch",
-            about: "one step of 1024 bodies, scalar against batched (per instruction set) and the hand-written NO_SQUISH and RK4",
+            about: "one step of 1024 bodies, scalar against batched (Strang, RK4, RKMK4; per instruction set) and the hand-written NO_SQUISH and RK4",
             takes: "2 min",
             how: How::Bench(Bench {
                 bench: "batch",
@@ -1585,6 +1585,12 @@ pub fn all() -> Vec<Generator> {
                                 what: "batched RK4, AVX-512 (target ≥ 4×)",
                                 id: "batch/free_body/batch/rk4/avx512",
                                 against: "batch/free_body/scalar/rk4",
+                                bound: Some(0.25),
+                            },
+                            Ratio {
+                                what: "batched RKMK4, AVX-512 (target ≥ 4×)",
+                                id: "batch/free_body/batch/rkmk4/avx512",
+                                against: "batch/free_body/scalar/rkmk4",
                                 bound: Some(0.25),
                             },
                             Ratio {

@@ -1,12 +1,13 @@
 //! The sweep's batched path: where the scene's method has a batched version (its registry row's
-//! `batch`: the Strang splitting, under a composition too, and quaternion RK4) and the model is a
+//! `batch`: the Strang splitting, under a composition too, quaternion RK4 and RKMK4) and the model is a
 //! body a batch carries (a rigid body in principal axes, free or in a uniform field, unforced:
 //! `Model::batch_body`), `lie-sim sweep` steps the members N at a time with the `batch` crate —
 //! eight bodies per vector operation on AVX-512, four on AVX2 — instead of one scalar step per
 //! member per core.
 //!
 //! **Same rows, to the ulp.** The batched Strang step is within `4 (1 + θ)` ulps of the scalar
-//! step (θ its largest rotation angle), batched RK4 is the scalar step bit for bit; each member's
+//! step (θ its largest rotation angle), batched RK4 is the scalar step bit for bit, and so is
+//! batched RKMK4 wherever a step rotates a body by at most π/2; each member's
 //! trajectory has the same bits whatever its lane, the chunk, the instruction set, the thread
 //! count and the shard (the `batch` crate's determinism), so the sweep's rows still do not depend
 //! on how it is run. The path is part of the sweep's fingerprint: shards of the batched and the
@@ -19,7 +20,7 @@
 use crate::methods::row::Batched;
 use crate::methods::MethodSpec;
 use crate::model::{Missing, Model};
-use batch::{Batch, BatchError, BodyModel, Kernel, Level, QuaternionRk4, Strang};
+use batch::{Batch, BatchError, BodyModel, Kernel, Level, QuaternionRk4, Rkmk4, Strang};
 use integrators::ensemble::{Execution, Summary};
 use lie_groups::{So3, Vector};
 use nalgebra::Vector3;
@@ -92,6 +93,7 @@ impl Plan {
         let Scratch {
             strang,
             rk4,
+            rkmk4,
             momenta,
             summaries,
         } = scratch;
@@ -113,6 +115,13 @@ impl Plan {
             Batched::Rk4 => self.batch(
                 rk4,
                 || QuaternionRk4::new(self.body.clone()),
+                job,
+                (h, steps, monitor_every),
+                execution,
+            )?,
+            Batched::Rkmk4 => self.batch(
+                rkmk4,
+                || Rkmk4::new(self.body.clone()),
                 job,
                 (h, steps, monitor_every),
                 execution,
@@ -167,6 +176,7 @@ struct Job<'a> {
 pub struct Scratch {
     strang: Option<Batch<Strang>>,
     rk4: Option<Batch<QuaternionRk4>>,
+    rkmk4: Option<Batch<Rkmk4>>,
     momenta: Vec<Vector3<f64>>,
     summaries: Vec<Summary<Vector3<f64>>>,
 }

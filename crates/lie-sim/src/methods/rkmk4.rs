@@ -2,7 +2,7 @@
 
 use super::families::{self, Family};
 use super::options::Options;
-use super::row::{Row, Stepping, TauRule, Takes, Trade};
+use super::row::{Batched, Row, Stepping, TauRule, Takes, Trade};
 use super::wrap::BuildError;
 use crate::model::{Alg, Model};
 use crate::sim::Boxed;
@@ -33,7 +33,7 @@ pub const ROW: Row = Row {
     family,
     second: true,
     marker: None,
-    batch: None,
+    batch: Some(Batched::Rkmk4),
     step_limit: Some(2.0),
 };
 

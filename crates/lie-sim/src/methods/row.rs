@@ -35,6 +35,9 @@ pub enum Batched {
     Strang,
     /// `batch::QuaternionRk4` (RK4 on (q, Π), bit for bit the scalar step).
     Rk4,
+    /// `batch::Rkmk4` (RKMK4 on SO(3) × so(3)*, bit for bit the scalar step wherever a step
+    /// rotates a body by at most π/2).
+    Rkmk4,
 }
 
 /// The options a method takes in `[integrator]`.
