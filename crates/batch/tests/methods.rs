@@ -214,6 +214,9 @@ fn strang_trajectories_and_compositions_follow_the_scalar_ones() {
     }
 }
 
+/// A body's momentum Π and attitude R.
+type BodyState = (Vector3<f64>, So3);
+
 /// (Π, R) of the scalar `integrators::Rkmk4` after `steps` steps of h from (Π₀, R₀), for body k
 /// of `common::MOMENTS`, free or in a field.
 fn scalar_rkmk4(
@@ -255,7 +258,8 @@ fn rkmk4_lanes_are_the_scalar_rkmk4() {
     let (h, steps) = (0.005, 1100);
     for level in Level::available() {
         for k in 0..bodies().len() {
-            let mut cases: Vec<(bool, Vec<(Vector3<f64>, So3)>)> = Vec::new();
+            // (in a field, the bodies' states)
+            let mut cases: Vec<(bool, Vec<BodyState>)> = Vec::new();
             for radius in [1e-100, 1e-3, 1.0, 5.0] {
                 let states: Vec<_> = (0..N as u64).map(|i| state(radius, k as u64, i)).collect();
                 cases.push((false, states.clone()));
