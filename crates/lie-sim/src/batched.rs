@@ -180,3 +180,97 @@ pub struct Scratch {
     momenta: Vec<Vector3<f64>>,
     summaries: Vec<Summary<Vector3<f64>>>,
 }
+
+/// A plan's batch as the caller steps it, for runs that read the bodies between steps (the
+/// many-body scenes of `crate::many_bodies`): the method's batch, with the plan's body, g₀,
+/// composition and level.
+#[derive(Debug, Clone)]
+pub enum PlanBatch {
+    /// The Strang splitting (under the plan's composition, if any).
+    Strang(Batch<Strang>),
+    /// Quaternion RK4.
+    Rk4(Batch<QuaternionRk4>),
+}
+
+impl Plan {
+    /// The bodies with momenta `momenta`, each from g₀, on the plan's level, run on `execution`
+    /// (no monitoring: the caller reads the states).
+    pub fn new_batch(
+        &self,
+        momenta: &[Vector3<f64>],
+        execution: Execution,
+    ) -> Result<PlanBatch, BatchError> {
+        fn made<K: Kernel>(
+            plan: &Plan,
+            kernel: K,
+            momenta: &[Vector3<f64>],
+            execution: Execution,
+        ) -> Result<Batch<K>, BatchError> {
+            let mut b = Batch::new(kernel, momenta, &[plan.g0], plan.level)?.parallel(execution);
+            if let Some(c) = &plan.composition {
+                b = b.with_composition(c.clone())?;
+            }
+            Ok(b)
+        }
+        Ok(match self.kind {
+            Batched::Strang => PlanBatch::Strang(made(
+                self,
+                Strang::new(self.body.clone()),
+                momenta,
+                execution,
+            )?),
+            Batched::Rk4 => PlanBatch::Rk4(made(
+                self,
+                QuaternionRk4::new(self.body.clone()),
+                momenta,
+                execution,
+            )?),
+        })
+    }
+
+    /// Starts `batch` (made by [`Plan::new_batch`]) over with the bodies `momenta` from g₀, its storage
+    /// kept (`Batch::refill`).
+    pub fn refill(
+        &self,
+        batch: &mut PlanBatch,
+        momenta: &[Vector3<f64>],
+    ) -> Result<(), BatchError> {
+        match batch {
+            PlanBatch::Strang(b) => b.refill(momenta, &[self.g0]),
+            PlanBatch::Rk4(b) => b.refill(momenta, &[self.g0]),
+        }
+    }
+}
+
+impl PlanBatch {
+    /// `steps` steps of h for every running body (`Batch::run`).
+    pub fn run(&mut self, h: f64, steps: u64) -> Result<(), BatchError> {
+        match self {
+            Self::Strang(b) => b.run(h, steps),
+            Self::Rk4(b) => b.run(h, steps),
+        }
+    }
+    /// The number of bodies.
+    pub fn len(&self) -> usize {
+        match self {
+            Self::Strang(b) => b.len(),
+            Self::Rk4(b) => b.len(),
+        }
+    }
+    /// Always false (a batch has at least one body).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    /// The published (Π, R) of body i, or `None` if it failed or never ran
+    /// (`Batch::state`, `Batch::status`).
+    pub fn running_state(&self, i: usize) -> Option<(Vector3<f64>, So3)> {
+        let (status, state) = match self {
+            Self::Strang(b) => (b.status(i), b.state(i)),
+            Self::Rk4(b) => (b.status(i), b.state(i)),
+        };
+        match status {
+            Ok(batch::LaneStatus::Running) => state.ok(),
+            _ => None,
+        }
+    }
+}

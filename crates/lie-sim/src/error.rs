@@ -72,6 +72,13 @@ pub enum SimError {
         /// What was wrong.
         message: String,
     },
+    /// `lie-sim many-bodies` cannot run: no `[many_bodies]` table, a system whose bodies a
+    /// many-body scene does not carry, a shard asked for.
+    #[error("many-bodies: {message}")]
+    ManyBodies {
+        /// What was wrong.
+        message: String,
+    },
     /// `lie-sim merge` refused its inputs: different sweeps, a shard missing or given twice, an
     /// index missing or duplicated, a file that is not a shard written by `lie-sim sweep`.
     #[error("merge: {message}")]

@@ -9,6 +9,7 @@
 
 pub mod attitude;
 pub mod batched;
+pub mod body_stats;
 pub mod bounds;
 pub mod build;
 pub mod choose;
@@ -26,6 +27,7 @@ pub mod input;
 pub mod invariants;
 pub mod ladder;
 pub mod listing;
+pub mod many_bodies;
 pub mod measure;
 pub mod methods;
 pub mod model;

@@ -11,6 +11,8 @@
 //! lie-sim sweep SCENE.toml --out s.csv      the scene's [sweep] ensemble on every core, one row
 //!         [--shard i/n] [--threads k]       per trajectory; shard i of n only (0-based)
 //! lie-sim merge s0.csv s1.csv … --out s.csv merge shard outputs into the full table
+//! lie-sim many-bodies SCENE.toml --out m.csv the scene's [many_bodies] rotors: one row of
+//!         [--threads k]                     statistics per output time, not one per body
 //! lie-sim default-scene                     print the embedded default scene, a starting point
 //! lie-sim methods [--markdown]              the method registry: options, systems, descriptors
 //! ```
@@ -44,8 +46,8 @@ use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use integrators::ensemble::Shard;
 use lie_sim::error::SimError;
 use lie_sim::{
-    choose, input, ladder, listing, methods, output, plot, reference, run, scene, stepping, sweep,
-    trade,
+    choose, input, ladder, listing, many_bodies, methods, output, plot, reference, run, scene,
+    stepping, sweep, trade,
 };
 use scene::{Overrides, Scene};
 use std::io::IsTerminal;
@@ -222,6 +224,39 @@ enum Command {
         /// agree to a few ulps; the path is part of the sweep's fingerprint).
         #[arg(long)]
         scalar: bool,
+        #[command(flatten)]
+        overrides: OverrideArgs,
+    },
+    /// Run the scene's [many_bodies] rotors and write one row of statistics per output time.
+    ///
+    /// N rigid bodies, free or in a uniform field, drawn as [sweep] draws its members; every
+    /// `stride` steps their energy and Casimir errors (mean, max, median, 99th percentile), the
+    /// order parameters ⟨cos θ⟩ and ⟨P₂(cos θ)⟩ against the field, the mean kinetic energy per
+    /// axis and the rotational temperature. Batched (SIMD) where the method has a batched
+    /// version; bit-identical whatever the thread count; memory independent of N. See
+    /// docs/ensembles.md.
+    ManyBodies {
+        /// The scene file (TOML) with a [many_bodies] table.
+        scene: PathBuf,
+        /// Statistics CSV (default: `target/lie-sim/<scene>-many-bodies.csv`).
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+        /// Worker threads (1: sequential) [default: one per core, or RAYON_NUM_THREADS].
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+        threads: Option<u32>,
+        /// Replace the table's count N.
+        #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+        count: Option<u64>,
+        /// Replace the table's seed.
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Step every body with the scalar method, even where a batched one exists.
+        #[arg(long)]
+        scalar: bool,
+        /// Refused: the statistics are sums in index order over all N bodies, which shards
+        /// cannot add up to the same bits; run the bodies on one machine's threads.
+        #[arg(long, value_name = "i/n", value_parser = parse_shard)]
+        shard: Option<Shard>,
         #[command(flatten)]
         overrides: OverrideArgs,
     },
@@ -997,6 +1032,119 @@ fn cmd_sweep(
 }
 
 #[allow(clippy::too_many_arguments)] // one per command-line option
+fn cmd_many_bodies(
+    scene_path: &Path,
+    out: Option<PathBuf>,
+    threads: Option<u32>,
+    count: Option<u64>,
+    seed: Option<u64>,
+    scalar: bool,
+    shard: Option<Shard>,
+    overrides: OverrideArgs,
+) -> Result<(), SimError> {
+    if let Some(shard) = shard {
+        return Err(SimError::ManyBodies {
+            message: format!(
+                "--shard {}/{}: a many-body run is not sharded — its statistics are sums over all \
+                 N bodies in index order, which shards cannot add up to the same bits; run it on \
+                 one machine (--threads), or split the bodies into scenes of their own seeds",
+                shard.index(),
+                shard.count()
+            ),
+        });
+    }
+    let (mut scene, stem) = load(Some(scene_path), overrides)?;
+    if let Some(spec) = scene.many_bodies.as_mut() {
+        if let Some(c) = count {
+            spec.count = usize::try_from(c).map_err(|_| SimError::ManyBodies {
+                message: format!("--count {c} does not fit this machine"),
+            })?;
+        }
+        if let Some(s) = seed {
+            spec.seed = s;
+        }
+    }
+    let out = out.unwrap_or_else(|| default_path(&stem, "-many-bodies.csv"));
+    output::refuse_clobbering(&[&out], &[scene_path])?;
+    let (spec, steps, _) = many_bodies::plan(&scene)?;
+    let cost = scene.step_cost(false)?;
+    many_bodies::estimate(&spec, steps, scene.method.stages(), cost)
+        .check("many-bodies", overrides.allow_large)?;
+    let bar = show_progress().then(|| {
+        let b = indicatif::ProgressBar::new(spec.count as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} bodies (eta {eta})",
+        ) {
+            b.set_style(style);
+        }
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
+        b
+    });
+    let ran = many_bodies::run(&scene, threads.map(|t| t as usize), scalar, bar.as_ref());
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let result = ran?;
+    output::write_atomic(&out, &result.csv(&scene))?;
+
+    let n = spec.count;
+    say!("lie-sim many-bodies: {} ({})", scene.name, scene.source);
+    say!("  system       {}", scene.system.kind());
+    say!("  method       {}", scene.method);
+    say!("  path         {}", result.path);
+    say!(
+        "  bodies       {n} {} (seed {})",
+        spec.kind.name(),
+        spec.seed
+    );
+    say!(
+        "  steps        {steps} × h = {} to T = {}; a row every {} steps",
+        result.h,
+        scene.duration,
+        spec.stride
+    );
+    say!(
+        "  threads      {}",
+        match threads {
+            Some(1) => "1 (sequential)".to_string(),
+            Some(t) => t.to_string(),
+            None => format!("{} (one per core)", rayon::current_num_threads()),
+        }
+    );
+    say!(
+        "  wall time    {} ({:.3e} body-steps/s)",
+        human_duration(result.wall),
+        n as f64 * steps as f64 / result.wall.as_secs_f64().max(1e-9)
+    );
+    let show = |x: Option<f64>| x.map_or_else(|| "—".to_string(), |x| format!("{x:.4e}"));
+    for row in [result.rows.first(), result.rows.last()]
+        .into_iter()
+        .flatten()
+    {
+        say!(
+            "  t = {:<9} running {} / {n}; |E − E₀| mean {} max {} p99 ≤ {}; ⟨cos θ⟩ {} ⟨P₂⟩ {}; T_rot {}",
+            row.time,
+            row.running(),
+            show(row.energy_error_mean()),
+            show(Some(row.energy_error_max())),
+            show(row.energy_error_quantile(0.99)),
+            show(row.cos_mean()),
+            show(row.p2_mean()),
+            show(row.temperature()),
+        );
+    }
+    say!(
+        "  statistics   {} ({} rows)",
+        out.display(),
+        result.rows.len()
+    );
+    if let Some(kib) = sweep::peak_resident_kib() {
+        say!("  peak memory  {:.1} MiB resident", kib as f64 / 1024.0);
+    }
+    Ok(())
+}
+
+#[allow(clippy::too_many_arguments)] // one per command-line option
 fn cmd_choose(
     scene_path: Option<&Path>,
     target: f64,
@@ -1245,6 +1393,16 @@ fn main() -> ExitCode {
             overrides,
         }) => cmd_sweep(&scene, out, shard, threads, count, seed, scalar, overrides),
         Some(Command::Merge { shards, out }) => cmd_merge(&shards, &out),
+        Some(Command::ManyBodies {
+            scene,
+            out,
+            threads,
+            count,
+            seed,
+            scalar,
+            shard,
+            overrides,
+        }) => cmd_many_bodies(&scene, out, threads, count, seed, scalar, shard, overrides),
         Some(Command::Choose {
             scene,
             target,

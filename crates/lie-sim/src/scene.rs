@@ -61,6 +61,12 @@
 //! kind = "momenta-on-energy-level"  # or "momenta-on-sphere"
 //! # monitor_every = 1               # energy/Casimir sampled every k steps (and the last)
 //!
+//! [many_bodies]                     # optional: the bodies run by `lie-sim many-bodies`
+//! count = 100000                    # N rotors (a rigid body in principal axes, free or in a
+//! seed = 1                          #   uniform field), momenta drawn as [sweep] draws them;
+//! kind = "momenta-on-sphere"        #   statistics every `stride` steps (crate::many_bodies)
+//! # stride = 10
+//!
 //! [forces]                          # optional: external forces (keys by kind: crate::forces)
 //! torque = [0.0, 0.0, 0.1]          # constant body torque, or a piecewise-linear schedule:
 //! # torque = { times = [0.0, 5.0], values = [[0.0, 0.0, 0.1], [0.0, 0.0, 0.0]] }
@@ -112,6 +118,7 @@ use crate::build::{build_with, probe, refusal};
 use crate::error::SimError;
 use crate::fields::{positive, FieldError};
 use crate::forces::{check_forces, RawForces};
+use crate::many_bodies::{check as check_many_bodies, ManyBodiesSpec, RawManyBodies};
 use crate::methods::spec::{check as check_method, RawIntegrator, SolverOptions};
 use crate::methods::wrap::BuildError;
 use crate::methods::MethodSpec;
@@ -153,6 +160,8 @@ struct RawScene<P, I> {
     output: RawOutput,
     /// `[sweep]` (optional): the ensemble run by `lie-sim sweep`.
     sweep: Option<RawSweep>,
+    /// `[many_bodies]` (optional): the bodies run by `lie-sim many-bodies`.
+    many_bodies: Option<RawManyBodies>,
     /// `[forces]` (optional): external torques, forces, thrust, wheel torques, damping and drag
     /// (`crate::forces`).
     forces: Option<RawForces>,
@@ -168,6 +177,7 @@ struct Common {
     integrator: RawIntegrator,
     output: RawOutput,
     sweep: Option<RawSweep>,
+    many_bodies: Option<RawManyBodies>,
     forces: Option<RawForces>,
     events: Vec<RawEvent>,
 }
@@ -292,6 +302,8 @@ pub struct Scene {
     pub events: Vec<EventSpec>,
     /// The `[sweep]` table, if the scene has one.
     pub sweep: Option<SweepSpec>,
+    /// The `[many_bodies]` table, if the scene has one.
+    pub many_bodies: Option<ManyBodiesSpec>,
 }
 
 /// A checked `[[events]]` entry: where the trajectory column `quantity` crosses `value`.
@@ -356,6 +368,7 @@ impl KindVisitor for ReadAs<'_> {
             integrator: raw.integrator,
             output: raw.output,
             sweep: raw.sweep,
+            many_bodies: raw.many_bodies,
             forces: raw.forces,
             events: raw.events,
         };
@@ -600,6 +613,12 @@ impl Scene {
                 })
             }
         };
+        let many_bodies = match &raw.many_bodies {
+            None => None,
+            Some(m) => {
+                Some(check_many_bodies(m, steps_for(duration, step)).map_err(|(f, m)| bad(f, m))?)
+            }
+        };
         Ok(Scene {
             name,
             source: label.into(),
@@ -614,6 +633,7 @@ impl Scene {
             output_times,
             events,
             sweep,
+            many_bodies,
         })
     }
 

@@ -288,11 +288,41 @@ impl<K: Sink> Job for SweepJob<'_, K> {
 }
 
 /// Runs `f` sequentially on this thread, or on `pool`.
-fn on<R: Send>(pool: Option<&rayon::ThreadPool>, f: impl FnOnce(Execution) -> R + Send) -> R {
+pub(crate) fn on<R: Send>(
+    pool: Option<&rayon::ThreadPool>,
+    f: impl FnOnce(Execution) -> R + Send,
+) -> R {
     match pool {
         None => f(Execution::Sequential),
         Some(pool) => pool.install(|| f(Execution::Parallel)),
     }
+}
+
+/// Member i of an ensemble around μ₀, drawn from (seed, i) alone (module page): on the sphere
+/// |μ| = |μ₀| or on the kinetic energy level h(μ) = h(μ₀) of `model`'s system. Member i depends
+/// only on (seed, i), so a chunk draws only its own members and a shard costs in proportion to
+/// its size whatever N is. Errors: the sphere around μ₀ = 0.
+#[allow(clippy::type_complexity)]
+pub fn member_draw<'m, M: Model>(
+    model: &'m M,
+    mu0: &Alg<M::G>,
+    kind: SweepKind,
+    seed: u64,
+) -> Result<impl Fn(usize) -> Result<Alg<M::G>, IntegratorError> + Sync + 'm, IntegratorError> {
+    let system = model.system();
+    let dim = <M::G as lie_groups::LieGroup>::dim();
+    let (radius, e0) = (mu0.norm(), system.hamiltonian(mu0));
+    if kind == SweepKind::MomentaOnSphere && radius == 0.0 {
+        return Err(IntegratorError::InvalidParameter {
+            reason: "momenta-on-sphere around μ₀ = 0: the sphere |μ| = |μ₀| is a point".into(),
+        });
+    }
+    Ok(move |i: usize| match kind {
+        SweepKind::MomentaOnSphere => sphere_point(dim, radius, seed, i as u64),
+        SweepKind::MomentaOnEnergyLevel => {
+            energy_level_point::<M::G, M::S>(system, e0, seed, i as u64)
+        }
+    })
 }
 
 impl<K: Sink> SweepJob<'_, K> {
@@ -308,24 +338,10 @@ impl<K: Sink> SweepJob<'_, K> {
             what: what.clone(),
             message: e.to_string(),
         };
-        let system = model.system();
         let config = self.solver.config();
         let dim = <G<M> as lie_groups::LieGroup>::dim();
-        let (n, seed) = (self.spec.count, self.spec.seed);
-        // Member i is drawn from (seed, i) alone, so a chunk draws only its own members and a
-        // shard costs in proportion to its size whatever N is.
-        let (radius, e0) = (mu0.norm(), system.hamiltonian(&mu0));
-        if self.spec.kind == SweepKind::MomentaOnSphere && radius == 0.0 {
-            return Err(failed(IntegratorError::InvalidParameter {
-                reason: "momenta-on-sphere around μ₀ = 0: the sphere |μ| = |μ₀| is a point".into(),
-            }));
-        }
-        let draw = |i: usize| match self.spec.kind {
-            SweepKind::MomentaOnSphere => sphere_point(dim, radius, seed, i as u64),
-            SweepKind::MomentaOnEnergyLevel => {
-                energy_level_point::<G<M>, M::S>(system, e0, seed, i as u64)
-            }
-        };
+        let n = self.spec.count;
+        let draw = member_draw(model, &mu0, self.spec.kind, self.spec.seed).map_err(&failed)?;
         let plan = if self.scalar {
             Err(crate::model::Missing::because("--scalar"))
         } else {

@@ -9,6 +9,7 @@ mod cli;
 mod dense_output;
 mod edges;
 mod imports;
+mod many_bodies;
 mod outputs;
 mod reference;
 mod results;
