@@ -36,7 +36,7 @@
 //!
 //! **Memory.** The bodies go through in chunks (batched: `crate::sweep::CHUNK`; scalar: as many
 //! as keep the chunk's observations — bodies × rows — under 2²⁰) and only the rows' accumulators
-//! stay, a few kilobytes each (at most [`MAX_ROWS`] rows): memory does not grow with N.
+//! stay, a few kilobytes each (at most `crate::scene::MAX_MANY_BODY_ROWS` rows): memory does not grow with N.
 
 use crate::attitude::Attitudes as _;
 use crate::batched::{Plan, PlanBatch};
@@ -46,76 +46,16 @@ use crate::methods::spec::SolverOptions;
 use crate::methods::wrap::BuildError;
 use crate::methods::{build as build_method, MethodSpec};
 use crate::model::{Alg, Job, Missing, Model};
-use crate::scene::{steps_for, Scene, SweepKind};
+use crate::scene::{steps_for, ManyBodiesSpec, Scene};
 use crate::sweep::{member_draw, on, SweepPath, CHUNK};
 use integrators::ensemble::Execution;
 use integrators::{Clock, Integrator as _, IntegratorError};
 use lie_groups::Vector as _;
 use nalgebra::Vector3;
-use serde::Deserialize;
 use std::time::{Duration, Instant};
-
-/// The most rows a run keeps (their accumulators stay until the last body ran).
-pub const MAX_ROWS: u64 = 10_001;
 
 /// The scalar path's chunk holds at most this many observations (bodies × rows).
 const SCALAR_OBSERVATIONS: usize = 1 << 20;
-
-/// `[many_bodies]` as written.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawManyBodies {
-    /// N ≥ 1.
-    count: usize,
-    /// The seed (default 0).
-    seed: Option<u64>,
-    /// Where the momenta are drawn.
-    kind: SweepKind,
-    /// Steps between rows (default ⌈n/100⌉).
-    stride: Option<u64>,
-}
-
-/// A checked `[many_bodies]` table.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ManyBodiesSpec {
-    /// N ≥ 1.
-    pub count: usize,
-    /// The seed.
-    pub seed: u64,
-    /// Where the momenta are drawn.
-    pub kind: SweepKind,
-    /// Steps between rows, ≥ 1.
-    pub stride: u64,
-}
-
-/// Checks `raw` for a run of n steps: the field at fault and what is wrong with it.
-pub fn check(raw: &RawManyBodies, n: u64) -> Result<ManyBodiesSpec, (&'static str, String)> {
-    if raw.count == 0 {
-        return Err(("many_bodies.count", "must be at least 1, got 0".into()));
-    }
-    let stride = match raw.stride {
-        Some(0) => return Err(("many_bodies.stride", "must be at least 1, got 0".into())),
-        Some(s) => s,
-        None => n.div_ceil(100).max(1),
-    };
-    let rows = n.div_ceil(stride) + 1;
-    if rows > MAX_ROWS {
-        return Err((
-            "many_bodies.stride",
-            format!(
-                "{stride} gives {rows} rows over the {n} steps, more than the {MAX_ROWS} a run \
-                 keeps: give a stride of at least {}",
-                n.div_ceil(MAX_ROWS - 1)
-            ),
-        ));
-    }
-    Ok(ManyBodiesSpec {
-        count: raw.count,
-        seed: raw.seed.unwrap_or(0),
-        kind: raw.kind,
-        stride,
-    })
-}
 
 /// The steps at which rows are written: 0, stride, 2 stride, …, and n.
 pub fn marks(n: u64, stride: u64) -> Vec<u64> {

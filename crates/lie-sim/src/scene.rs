@@ -118,7 +118,6 @@ use crate::build::{build_with, probe, refusal};
 use crate::error::SimError;
 use crate::fields::{positive, FieldError};
 use crate::forces::{check_forces, RawForces};
-use crate::many_bodies::{check as check_many_bodies, ManyBodiesSpec, RawManyBodies};
 use crate::methods::spec::{check as check_method, RawIntegrator, SolverOptions};
 use crate::methods::wrap::BuildError;
 use crate::methods::MethodSpec;
@@ -251,6 +250,68 @@ impl SweepKind {
             Self::MomentaOnEnergyLevel => "momenta-on-energy-level",
         }
     }
+}
+
+/// The most rows a `lie-sim many-bodies` run keeps (their accumulators stay until the last body ran).
+pub const MAX_MANY_BODY_ROWS: u64 = 10_001;
+
+/// `[many_bodies]` as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawManyBodies {
+    /// N ≥ 1.
+    count: usize,
+    /// The seed (default 0).
+    seed: Option<u64>,
+    /// Where the momenta are drawn.
+    kind: SweepKind,
+    /// Steps between rows (default ⌈n/100⌉).
+    stride: Option<u64>,
+}
+
+/// A checked `[many_bodies]` table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ManyBodiesSpec {
+    /// N ≥ 1.
+    pub count: usize,
+    /// The seed.
+    pub seed: u64,
+    /// Where the momenta are drawn.
+    pub kind: SweepKind,
+    /// Steps between rows, ≥ 1.
+    pub stride: u64,
+}
+
+/// Checks `raw` for a run of n steps: the field at fault and what is wrong with it.
+pub fn check_many_bodies(
+    raw: &RawManyBodies,
+    n: u64,
+) -> Result<ManyBodiesSpec, (&'static str, String)> {
+    if raw.count == 0 {
+        return Err(("many_bodies.count", "must be at least 1, got 0".into()));
+    }
+    let stride = match raw.stride {
+        Some(0) => return Err(("many_bodies.stride", "must be at least 1, got 0".into())),
+        Some(s) => s,
+        None => n.div_ceil(100).max(1),
+    };
+    let rows = n.div_ceil(stride) + 1;
+    if rows > MAX_MANY_BODY_ROWS {
+        return Err((
+            "many_bodies.stride",
+            format!(
+                "{stride} gives {rows} rows over the {n} steps, more than the {MAX_MANY_BODY_ROWS} a run \
+                 keeps: give a stride of at least {}",
+                n.div_ceil(MAX_MANY_BODY_ROWS - 1)
+            ),
+        ));
+    }
+    Ok(ManyBodiesSpec {
+        count: raw.count,
+        seed: raw.seed.unwrap_or(0),
+        kind: raw.kind,
+        stride,
+    })
 }
 
 /// A checked `[sweep]` table.
