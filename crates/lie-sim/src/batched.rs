@@ -190,6 +190,8 @@ pub enum PlanBatch {
     Strang(Batch<Strang>),
     /// Quaternion RK4.
     Rk4(Batch<QuaternionRk4>),
+    /// RKMK4.
+    Rkmk4(Batch<Rkmk4>),
 }
 
 impl Plan {
@@ -225,6 +227,12 @@ impl Plan {
                 momenta,
                 execution,
             )?),
+            Batched::Rkmk4 => PlanBatch::Rkmk4(made(
+                self,
+                Rkmk4::new(self.body.clone()),
+                momenta,
+                execution,
+            )?),
         })
     }
 
@@ -238,6 +246,7 @@ impl Plan {
         match batch {
             PlanBatch::Strang(b) => b.refill(momenta, &[self.g0]),
             PlanBatch::Rk4(b) => b.refill(momenta, &[self.g0]),
+            PlanBatch::Rkmk4(b) => b.refill(momenta, &[self.g0]),
         }
     }
 }
@@ -248,6 +257,7 @@ impl PlanBatch {
         match self {
             Self::Strang(b) => b.run(h, steps),
             Self::Rk4(b) => b.run(h, steps),
+            Self::Rkmk4(b) => b.run(h, steps),
         }
     }
     /// The number of bodies.
@@ -255,6 +265,7 @@ impl PlanBatch {
         match self {
             Self::Strang(b) => b.len(),
             Self::Rk4(b) => b.len(),
+            Self::Rkmk4(b) => b.len(),
         }
     }
     /// Always false (a batch has at least one body).
@@ -267,6 +278,7 @@ impl PlanBatch {
         let (status, state) = match self {
             Self::Strang(b) => (b.status(i), b.state(i)),
             Self::Rk4(b) => (b.status(i), b.state(i)),
+            Self::Rkmk4(b) => (b.status(i), b.state(i)),
         };
         match status {
             Ok(batch::LaneStatus::Running) => state.ok(),

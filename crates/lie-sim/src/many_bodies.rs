@@ -20,7 +20,7 @@
 //! ```
 //!
 //! **Paths.** Where the method has a batched version (`crate::batched`: the Strang splitting and
-//! its compositions, quaternion RK4) the bodies are stepped a chunk at a time by the batch, read
+//! its compositions, quaternion RK4, RKMK4) the bodies are stepped a chunk at a time by the batch, read
 //! between the stretches of steps; otherwise (or with `--scalar`) each body by the scalar method,
 //! built as `lie-sim sweep` builds a member. Batched RK4 is the scalar RK4 bit for bit on (q, Π), so
 //! the columns read from Π (kinetic energies, temperature) are the same on both paths; R is
