@@ -123,7 +123,7 @@ impl Plan {
                 rkmk4,
                 || Rkmk4::new(self.body.clone()),
                 job,
-                (h, steps, monitor_every),
+                (end, steps, monitor_every),
                 execution,
             )?,
         }
