@@ -18,7 +18,7 @@ const STEPS: usize = 1000;
 fn ensemble_throughput(c: &mut Criterion) {
     let body = RigidBody::principal([1.0, 2.0, 3.0]).expect("valid inertia");
     let mu0: Vec<Vector3<f64>> = momenta_on_sphere(3, 1.0, TRAJECTORIES, 1).expect("sphere");
-    let sweep = Ensemble::new(mu0, 0.01, STEPS).expect("valid sweep");
+    let sweep = Ensemble::new(mu0, 0.01 * STEPS as f64, STEPS).expect("valid sweep");
     let build = |_: usize, mu: &Vector3<f64>| {
         LiePoisson::<So3, Cayley, _>::new(body.clone(), 0.5, *mu, None)
     };

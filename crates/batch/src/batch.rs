@@ -254,6 +254,27 @@ impl<K: Kernel> Batch<K> {
         Ok(())
     }
 
+    /// `steps` = n ≥ 1 steps from the batch's time t₀ to the end time T: n − 1 steps of
+    /// h = (T − t₀)/n, then one of T − t, t the time before it, so that the batch lands on T —
+    /// the steps `integrators::ensemble::Ensemble` takes for each of its members, so that a
+    /// batched sweep and the scalar one end at the same T by the same last step.
+    pub fn run_to(&mut self, end: f64, steps: u64) -> Result<(), BatchError> {
+        if !end.is_finite() || steps == 0 {
+            return Err(BatchError::InvalidParameter {
+                reason: format!(
+                    "run to T = {end} in {steps} steps: T must be finite and the steps at least one"
+                ),
+            });
+        }
+        let h = (end - self.time()) / steps as f64;
+        if steps > 1 {
+            self.run(h, steps - 1)?;
+        }
+        // As the ensemble's last step: T − t exact where T/2 ≤ t ≤ 2T (Sterbenz), added to the
+        // clock's t and its carried error (below half an ulp of t), rounds to T.
+        self.run(end - self.time(), 1)
+    }
+
     /// The stored group and lane of body i (< N).
     fn lane(&self, i: usize) -> Result<(&[f64], usize), BatchError> {
         if i >= self.len {

@@ -338,3 +338,44 @@ fn a_refilled_batch_is_a_new_batch() {
     ));
     assert_eq!(reused.len(), pis.len());
 }
+
+/// `run_to(T, n)` ends at exactly T (the batch's time and every summary's) where n steps of
+/// fl(T/n) end an ulp past it (0.7 in 70 steps: 0.7000000000000001), forwards and backwards; its
+/// last step is T − t, as `integrators::ensemble::Ensemble` takes it; a T that is not finite or
+/// no steps are refused, the batch untouched.
+#[test]
+fn run_to_lands_on_t() {
+    let k = Strang::new(BodyModel::free(&bodies()[0]).unwrap());
+    let (pis, rs): (Vec<_>, Vec<_>) = (0..5).map(|i| state(1.0, 3, i)).unzip();
+    let new = || Batch::new(k.clone(), &pis, &rs, Level::Scalar).unwrap();
+    for end in [0.7, -0.7] {
+        let mut b = new();
+        b.run_to(end, 70).unwrap();
+        assert_eq!((b.time(), b.steps()), (end, 70));
+        let mut out = Vec::new();
+        b.summaries_into(|i| i, &mut out);
+        assert!(out.iter().all(|s| s.time == end && s.status.is_completed()));
+        let mut by_hand = new();
+        by_hand.run(end / 70.0, 69).unwrap();
+        by_hand.run(end - by_hand.time(), 1).unwrap();
+        assert_eq!(by_hand.momenta(), b.momenta());
+        // the negative control: 70 equal steps miss T
+        let mut equal = new();
+        equal.run(end / 70.0, 70).unwrap();
+        assert_ne!(equal.time(), end);
+    }
+    let mut b = new();
+    b.run_to(0.7, 1).unwrap();
+    assert_eq!(b.time(), 0.7);
+    for (end, n) in [(f64::NAN, 3), (f64::INFINITY, 3), (1.0, 0)] {
+        assert!(matches!(
+            b.run_to(end, n),
+            Err(BatchError::InvalidParameter { .. })
+        ));
+    }
+    assert_eq!(
+        (b.time(), b.steps()),
+        (0.7, 1),
+        "a refused run takes no step"
+    );
+}

@@ -2,7 +2,8 @@
 //! every core through rayon, with results bit-identical to the sequential run.
 //!
 //! An [`Ensemble`] is a sweep: a `Vec` of members `P` (an initial momentum μ₀, a parameter set, …)
-//! whose position is the member's **index**, a step h and a step count. A builder closure
+//! whose position is the member's **index**, an end time T and a step count n (n steps from the
+//! member's t₀, the last one landing on T). A builder closure
 //! `(index, &P) → integrator` turns a member into any [`Integrator`]; each trajectory is integrated
 //! on its own and reduced to a [`Summary`] (index, final μ, max energy and Casimir errors, status).
 //!
@@ -27,12 +28,12 @@
 //!
 //! let body = RigidBody::principal([1.0, 2.0, 3.0])?;
 //! let mu0: Vec<Vector3<f64>> = momenta_on_sphere(3, 1.0, 8, 42)?;
-//! let sweep = Ensemble::new(mu0, 0.01, 100)?;
+//! let sweep = Ensemble::new(mu0, 1.0, 100)?;
 //! let build = |_i: usize, mu: &Vector3<f64>| {
 //!     LiePoisson::<So3, Cayley, _>::new(body.clone(), 0.5, *mu, None)
 //! };
 //! let full = sweep.run_parallel(&build);
-//! assert!(full.iter().all(|s| s.status.is_completed()));
+//! assert!(full.iter().all(|s| s.status.is_completed() && s.time == 1.0));
 //! assert!(full.iter().all(|s| s.max_casimir_error.unwrap() < 1e-14));
 //! // Two shards, run separately (e.g. on two machines), merged back.
 //! let parts = (0..2).map(|i| sweep.run_shard(Shard::new(i, 2).unwrap(), Execution::Sequential, &build));
@@ -372,11 +373,11 @@ pub fn push_exp(out: &mut String, x: f64) {
     out.push_str(core::str::from_utf8(&itoa[k..]).unwrap_or_default());
 }
 
-/// A sweep: members `P` (index = position), step h, number of steps.
+/// A sweep: members `P` (index = position), end time T, number of steps n.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ensemble<P> {
     members: Vec<P>,
-    h: f64,
+    end: f64,
     steps: usize,
     monitor_every: usize,
 }
@@ -385,17 +386,26 @@ pub struct Ensemble<P> {
 type Algebra<I> = <<I as Integrator>::Group as LieGroup>::Algebra;
 
 impl<P: Sync> Ensemble<P> {
-    /// A sweep over `members`, each integrated with `steps` steps of size h (h ≠ 0 finite; h < 0
-    /// integrates backwards). Energy and Casimir are monitored after every step.
-    pub fn new(members: Vec<P>, h: f64, steps: usize) -> Result<Self, IntegratorError> {
-        if !h.is_finite() || h == 0.0 {
+    /// A sweep over `members`, each integrated from its initial time t₀ (the time of the
+    /// integrator its builder makes) to the end time T in `steps` = n ≥ 1 steps: n − 1 steps of
+    /// h = (T − t₀)/n, then the last one of T − t, t the member's time before it, so that the
+    /// trajectory lands on T (its summary's `time` is T, not the n·h that n equal steps would
+    /// sum to: with T = 0.7 and n = 70, 0.7000000000000001). T < t₀ integrates backwards.
+    /// Energy and Casimir are monitored after every step.
+    ///
+    /// Errors: T not finite, or n = 0.
+    pub fn new(members: Vec<P>, end: f64, steps: usize) -> Result<Self, IntegratorError> {
+        if !end.is_finite() || steps == 0 {
             return Err(IntegratorError::InvalidParameter {
-                reason: format!("ensemble step h = {h} must be finite and non-zero"),
+                reason: format!(
+                    "ensemble to T = {end} in {steps} steps: T must be finite and the steps at \
+                     least one"
+                ),
             });
         }
         Ok(Self {
             members,
-            h,
+            end,
             steps,
             monitor_every: 1,
         })
@@ -418,9 +428,9 @@ impl<P: Sync> Ensemble<P> {
     pub fn is_empty(&self) -> bool {
         self.members.is_empty()
     }
-    /// The step h.
-    pub fn step_size(&self) -> f64 {
-        self.h
+    /// The end time T.
+    pub fn end(&self) -> f64 {
+        self.end
     }
     /// The number of steps per trajectory.
     pub fn steps(&self) -> usize {
@@ -466,8 +476,18 @@ impl<P: Sync> Ensemble<P> {
         };
         let mut status = Status::Completed;
         let mut taken = 0;
-        for k in 0..self.steps {
-            if let Err(error) = integ.step(self.h) {
+        let n = self.steps;
+        let h = (self.end - integ.time()) / n as f64;
+        for k in 0..n {
+            // The last step from where the member's clock stands to T. T − t is exact where
+            // T/2 ≤ t ≤ 2T (Sterbenz; so for t₀ = 0 and n ≥ 2), and the clock adds it to t and
+            // its carried error, below half an ulp of t: the sum rounds to T.
+            let step = if k + 1 < n {
+                h
+            } else {
+                self.end - integ.time()
+            };
+            if let Err(error) = integ.step(step) {
                 status = Status::StepFailed { step: k, error };
                 break;
             }

@@ -74,8 +74,8 @@ impl Plan {
         self.level
     }
 
-    /// One summary per member (momenta `members`, sweep indices `indices`) after `steps` steps of
-    /// h, energy and Casimir monitored every `monitor_every` steps, as
+    /// One summary per member (momenta `members`, sweep indices `indices`) after `steps` steps
+    /// from 0 to the end time T, the last one landing on T (`Batch::run_to`), energy and Casimir monitored every `monitor_every` steps, as
     /// `integrators::ensemble::Ensemble` reports them for the scalar method. The batch, the
     /// momenta and the summaries live in `scratch`, which the sweep hands every chunk, so that
     /// no chunk after the first allocates a large buffer (the same bits as a new batch per chunk).
@@ -85,7 +85,7 @@ impl Plan {
         scratch: &'s mut Scratch,
         members: &[A],
         indices: &[usize],
-        h: f64,
+        end: f64,
         steps: usize,
         monitor_every: usize,
         execution: Execution,
@@ -109,21 +109,21 @@ impl Plan {
                 strang,
                 || Strang::new(self.body.clone()),
                 job,
-                (h, steps, monitor_every),
+                (end, steps, monitor_every),
                 execution,
             )?,
             Batched::Rk4 => self.batch(
                 rk4,
                 || QuaternionRk4::new(self.body.clone()),
                 job,
-                (h, steps, monitor_every),
+                (end, steps, monitor_every),
                 execution,
             )?,
             Batched::Rkmk4 => self.batch(
                 rkmk4,
                 || Rkmk4::new(self.body.clone()),
                 job,
-                (h, steps, monitor_every),
+                (end, steps, monitor_every),
                 execution,
             )?,
         }
@@ -139,7 +139,7 @@ impl Plan {
             indices,
             out,
         }: Job<'_>,
-        (h, steps, monitor_every): (f64, usize, usize),
+        (end, steps, monitor_every): (f64, usize, usize),
         execution: Execution,
     ) -> Result<(), BatchError> {
         let b = match slot.take() {
@@ -157,7 +157,7 @@ impl Plan {
             }
         };
         let b = slot.insert(b.monitor_every(monitor_every as u64).parallel(execution));
-        b.run(h, steps as u64)?;
+        b.run_to(end, steps as u64)?;
         b.summaries_into(|i| indices[i], out);
         Ok(())
     }

@@ -4,7 +4,7 @@
 //! A scene with a `[sweep]` table names N initial momenta μ₀⁽ⁱ⁾, i = 0 … N−1, drawn around the
 //! scene's μ₀ by `integrators::ensemble` (on the sphere |μ| = |μ₀| or on the kinetic energy level
 //! h(μ) = h(μ₀)); member i depends only on (seed, i). Each member starts from the scene's g₀ and
-//! takes n = ⌈T/h⌉ equal steps of T/n with the scene's method; its summary (final μ, maximum
+//! takes n = ⌈T/h⌉ steps of T/n with the scene's method, the last one landing on T exactly; its summary (final μ, maximum
 //! energy and Casimir errors, status) is one CSV row.
 //!
 //! **Bit-identical.** Trajectories share nothing and each is a fixed sequence of floating-point
@@ -261,7 +261,8 @@ impl std::fmt::Display for SweepPath {
 /// chunk at a time, into a [`Sink`].
 struct SweepJob<'a, K> {
     spec: SweepSpec,
-    h: f64,
+    /// The end time T every member lands on.
+    end: f64,
     steps: usize,
     shard: Shard,
     pool: Option<&'a rayon::ThreadPool>,
@@ -395,7 +396,7 @@ impl<K: Sink> SweepJob<'_, K> {
                             &mut scratch,
                             &members,
                             &indices,
-                            self.h,
+                            self.end,
                             self.steps,
                             self.spec.monitor_every,
                             execution,
@@ -410,9 +411,10 @@ impl<K: Sink> SweepJob<'_, K> {
                     on(self.pool, |execution| sink.take(summaries, dim, execution))?;
                 }
                 Err(_) => {
-                    let ensemble = Ensemble::new(std::mem::take(&mut members), self.h, self.steps)
-                        .map_err(&failed)?
-                        .monitor_every(self.spec.monitor_every);
+                    let ensemble =
+                        Ensemble::new(std::mem::take(&mut members), self.end, self.steps)
+                            .map_err(&failed)?
+                            .monitor_every(self.spec.monitor_every);
                     let mut summaries: Vec<Summary<Alg<G<M>>>> = on(self.pool, |execution| {
                         ensemble.run_shard(Shard::all(), execution, &build)
                     });
@@ -495,12 +497,14 @@ pub fn plan(scene: &Scene) -> Result<(SweepSpec, usize, f64), SimError> {
 /// included (the batched and scalar paths agree to ulps, not bits).
 pub fn fingerprint(scene: &Scene, spec: &SweepSpec, steps: usize, h: f64, batched: bool) -> u64 {
     let text = format!(
-        "{:?}|{:?}|{:?}|{}|{:?}|{:?}|{:?}{}",
+        "{:?}|{:?}|{:?}|{}|{:?}|{:?}|{:?}|{:?}{}",
         scene.system,
         scene.method,
         scene.solver,
         scene.reconstruct,
         h,
+        // The last step lands on T: two sweeps of the same h and n but different T differ there.
+        scene.duration,
         steps,
         spec,
         if batched { "|batched" } else { "" }
@@ -530,7 +534,7 @@ pub fn run<K: Sink>(
     sink: &mut K,
     progress: Option<&indicatif::ProgressBar>,
 ) -> Result<(SweepOutput, SweepSpec, Duration), SimError> {
-    let (spec, steps, h) = plan(scene)?;
+    let (spec, steps, _) = plan(scene)?;
     let pool = match threads {
         Some(1) => None,
         _ => Some(
@@ -544,7 +548,7 @@ pub fn run<K: Sink>(
     };
     let job = SweepJob {
         spec,
-        h,
+        end: scene.duration,
         steps,
         shard,
         pool: pool.as_ref(),

@@ -16,7 +16,12 @@ fn body() -> RigidBody {
 }
 
 fn sweep(n: usize, steps: usize) -> Ensemble<Vector3<f64>> {
-    Ensemble::new(momenta_on_sphere(3, 1.0, n, 7).unwrap(), 0.05, steps).unwrap()
+    Ensemble::new(
+        momenta_on_sphere(3, 1.0, n, 7).unwrap(),
+        0.05 * steps as f64,
+        steps,
+    )
+    .unwrap()
 }
 
 type Lp = LiePoisson<So3, Cayley, RigidBody>;
@@ -91,10 +96,13 @@ fn parallel_runs_of_processed_and_modified_methods_are_bit_identical_to_the_sequ
     assert!(seq.iter().all(|s| s.status.is_completed()));
     let mu3 = momenta_on_sphere(3, 1.0, 8, 7).unwrap()[3];
     let mut single = processed(3, &mu3).unwrap();
-    for _ in 0..10 {
+    for _ in 0..9 {
         single.step(0.05).unwrap();
     }
+    // The ensemble's last step lands on T = 0.5.
+    single.step(0.5 - single.time()).unwrap();
     assert_eq!(seq[3].momentum.unwrap(), single.momentum());
+    assert_eq!(seq[3].time, 0.5);
     let modified = |_: usize, mu: &Vector3<f64>| {
         ModifiedLiePoisson::<Cayley>::with_scheme(
             body(),
@@ -204,7 +212,7 @@ fn bad_members_are_reported_per_trajectory() {
         Vector3::new(f64::NAN, 0.0, 0.0),
         Vector3::new(0.6, -0.4, 0.9),
     ];
-    let sweep = Ensemble::new(members, 0.05, 10).unwrap();
+    let sweep = Ensemble::new(members, 0.5, 10).unwrap();
     let out = sweep.run_parallel(&build);
     assert!(out[0].status.is_completed());
     assert!(matches!(
@@ -220,7 +228,7 @@ fn bad_members_are_reported_per_trajectory() {
         }
     );
     // A step that cannot converge: (huge h, 2 solver iterations).
-    let sweep = Ensemble::new(vec![Vector3::new(5.0, -4.0, 9.0)], 3.0, 4).unwrap();
+    let sweep = Ensemble::new(vec![Vector3::new(5.0, -4.0, 9.0)], 12.0, 4).unwrap();
     let tight = |_: usize, mu: &Vector3<f64>| {
         build(0, mu).map(|lp| {
             lp.with_solver(integrators::SolverConfig {
@@ -236,8 +244,44 @@ fn bad_members_are_reported_per_trajectory() {
         out[0].status
     );
     assert_eq!(out[0].steps, 0);
-    assert!(Ensemble::new(vec![1.0], 0.0, 3).is_err());
     assert!(Ensemble::new(vec![1.0], f64::NAN, 3).is_err());
+    assert!(Ensemble::new(vec![1.0], f64::INFINITY, 3).is_err());
+    assert!(Ensemble::new(vec![1.0], 1.0, 0).is_err());
+}
+
+/// Every member ends at exactly T, forwards and backwards, where n equal steps of fl(T/n) do not
+/// (the negative control: 70 steps of 0.7/70 end at 0.7000000000000001, on the integrators'
+/// compensated clock, as 49 of 1/49 at 0.9999999999999999), and its last step is the one that
+/// lands there: a member stepped by hand with n − 1 steps of T/n and one of T − t has its bits.
+#[test]
+fn every_member_ends_at_exactly_t() {
+    use integrators::Integrator;
+    let members = momenta_on_sphere(3, 1.0, 4, 11).unwrap();
+    for (end, n) in [(0.7, 70usize), (1.0, 49), (-0.7, 70), (3.0, 7), (0.7, 1)] {
+        let out = Ensemble::new(members.clone(), end, n)
+            .unwrap()
+            .run_sequential(&build);
+        for s in &out {
+            assert!(s.status.is_completed());
+            assert_eq!((s.time, s.steps), (end, n), "T = {end}, n = {n}");
+        }
+        let mut equal = build(0, &members[0]).unwrap();
+        let mut by_hand = build(0, &members[0]).unwrap();
+        for k in 0..n {
+            equal.step(end / n as f64).unwrap();
+            let h = if k + 1 < n {
+                end / n as f64
+            } else {
+                end - by_hand.time()
+            };
+            by_hand.step(h).unwrap();
+        }
+        assert_eq!(by_hand.time(), end);
+        assert_eq!(out[0].momentum.unwrap(), by_hand.momentum());
+        if n >= 49 {
+            assert_ne!(equal.time(), end, "T = {end}, n = {n}");
+        }
+    }
 }
 
 #[test]

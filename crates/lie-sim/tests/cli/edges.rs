@@ -97,6 +97,105 @@ fn run_meets_output_times_at_t_and_ends_on_t() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The symmetric top 𝕀 = diag(1, 1, 2), Π₀ = (1, 0, 1) (Π = (cos(t/2), sin(t/2), 1)), to
+/// T = 20 with the stepping `integrator` gives (a method and its step, tolerance or ε).
+fn top(integrator: &str) -> String {
+    format!(
+        "[system]\nkind = \"free-rigid-body\"\ninertia = [1.0, 1.0, 2.0]\n\
+         [initial]\nmomentum = [1.0, 0.0, 1.0]\n\
+         [integrator]\n{integrator}\nduration = 20.0\n"
+    )
+}
+
+/// On every kind of stepping — fixed steps whose last one is shortened (h = 0.03: T/h =
+/// 666.7), steps to a tolerance, reversible steps with ε — a run lands on T exactly (its last
+/// row), writes its `[output] times` rows at exactly those times (0.3 and 1.0 step boundaries
+/// of fixed steps of 0.1, the rest between steps) with `[[events]]` located alongside, and a
+/// `stop = true` event ends it with its last row at the located time: Π₂ = −½ there to the
+/// event tolerance, t within the method's phase error of 7π/3, no row after it. (The values and
+/// the located times are checked against the closed form within a bound on the method's phase
+/// error in the angle t/2 — Lie–Poisson's is 1.5e-5 (h/0.01)² t: 2.7e-3 at T = 20 with
+/// h = 0.03, 3e-2 with h = 0.1 — and twice that in t.)
+#[test]
+fn events_and_output_times_land_exactly_with_every_kind_of_step() {
+    let pi = std::f64::consts::PI;
+    let times = [0.0, 0.3, 1.0, 7.0, 12.3456, 20.0];
+    for (integrator, phase) in [
+        (
+            "method = \"lie-poisson\"\ntau = \"cayley\"\ntheta = 0.5\nstep = 0.03",
+            5e-3,
+        ),
+        (
+            "method = \"lie-poisson\"\ntau = \"cayley\"\ntheta = 0.5\nstep = 0.1",
+            5e-2,
+        ),
+        ("method = \"rkmk-dop853\"\ntolerance = 1e-9", 5e-3),
+        ("method = \"splitting\"\nepsilon = 0.01", 5e-3),
+    ] {
+        let scene = top(integrator);
+        // the stride's rows: the last one at T
+        let (ok, _, err, rows, _) = run_text("edges-events-t", &scene);
+        assert!(ok, "{integrator}: {err}");
+        assert_eq!(rows.last().unwrap()[0], 20.0, "{integrator}");
+        // rows at the requested times, events located between
+        let with_times =
+            format!("{scene}\n[output]\ntimes = {times:?}\n\n[[events]]\nquantity = \"mu1\"\n");
+        let (ok, out, err, rows, _) = run_text("edges-events-times", &with_times);
+        assert!(ok, "{integrator}: {err}");
+        let t: Vec<f64> = rows.iter().map(|r| r[0]).collect();
+        assert_eq!(t, times, "{integrator}");
+        for row in &rows {
+            let (c, s) = ((row[0] / 2.0).cos(), (row[0] / 2.0).sin());
+            assert!(
+                (row[1] - c).abs() < phase && (row[2] - s).abs() < phase,
+                "{integrator}: {row:?}"
+            );
+        }
+        let events: Vec<f64> = out
+            .lines()
+            .filter(|l| l.trim_start().starts_with("event"))
+            .map(|l| l.rsplit("t = ").next().unwrap().trim().parse().unwrap())
+            .collect();
+        assert_eq!(events.len(), 3, "{integrator}: {out}");
+        for (t, want) in events.iter().zip([pi, 3.0 * pi, 5.0 * pi]) {
+            assert!(
+                (t - want).abs() < 2.0 * phase,
+                "{integrator}: {t} vs {want}"
+            );
+        }
+        // a terminal event: the last row at its time
+        let stop = format!(
+            "{scene}\n[[events]]\nquantity = \"mu2\"\nvalue = -0.5\ndirection = \"falling\"\n\
+             stop = true\n"
+        );
+        let (ok, out, err, rows, _) = run_text("edges-events-stop", &stop);
+        assert!(ok, "{integrator}: {err}");
+        assert!(out.contains("stopped"), "{integrator}: {out}");
+        let last = rows.last().unwrap();
+        assert!(
+            (last[0] - 7.0 * pi / 3.0).abs() < 2.0 * phase,
+            "{integrator}: {last:?}"
+        );
+        assert!((last[2] + 0.5).abs() < 1e-9, "{integrator}: {last:?}");
+        assert!(
+            rows.windows(2).all(|w| w[0][0] < w[1][0]),
+            "{integrator}: times increase, none after the stop"
+        );
+        let reported: f64 = out
+            .lines()
+            .find(|l| l.contains("stopped"))
+            .and_then(|l| l.split("t = ").nth(1))
+            .and_then(|l| l.split_whitespace().next())
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(
+            (reported - last[0]).abs() < 1e-11,
+            "{integrator}: {reported} vs {last:?}"
+        );
+    }
+}
+
 /// Every input — scene, `--reference`, `merge` shards, `plot` CSV — is refused when it is a
 /// character device, a FIFO or a directory, in one line naming the path, at once: nothing is
 /// read from it. (Reported: `lie-sim run /dev/zero` grew ~2 GB/s until memory ran out.)
@@ -177,6 +276,59 @@ fn shards_without_out_do_not_share_a_default_file() {
         std::fs::read(dir.join("merged.csv")).unwrap(),
         std::fs::read(out.join("sweep-sweep.csv")).unwrap()
     );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Every member of a sweep ends at exactly T, on the scalar path, the batched one and a shard:
+/// `--duration 0.7 --step 0.01` takes 70 steps of 0.7/70, which sum to 0.7000000000000001; the
+/// last one lands on T. (Reported: every row's time was 0.7000000000000001 where `run` ends at
+/// 0.7.) The batched and scalar splitting agree on the time to the bit.
+#[test]
+fn sweeps_end_at_exactly_t_on_every_path() {
+    let dir = temp_dir("edges-sweep-t");
+    let times = |scene: &str, out: &str, extra: &[&str]| -> Vec<String> {
+        let scene = scenes_dir().join(scene);
+        let mut args = vec![
+            "sweep",
+            scene.to_str().unwrap(),
+            "--out",
+            out,
+            "--count",
+            "11",
+            "--duration",
+            "0.7",
+            "--step",
+            "0.01",
+            "-q",
+        ];
+        args.extend_from_slice(extra);
+        let o = lie_sim(&args, &dir);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        let text = std::fs::read_to_string(dir.join(out)).unwrap();
+        let header = text.lines().nth(1).unwrap();
+        assert!(header.starts_with("index,status,steps,time,"), "{header}");
+        text.lines()
+            .skip(2)
+            .map(|l| l.split(',').nth(3).unwrap().to_string())
+            .collect()
+    };
+    for (scene, out, extra) in [
+        ("sweep.toml", "scalar.csv", &[][..]),
+        ("sweep.toml", "shard.csv", &["--shard", "1/3"][..]),
+        ("sweep-rotors.toml", "batched.csv", &[][..]),
+        (
+            "sweep-rotors.toml",
+            "batched-shard.csv",
+            &["--shard", "2/3"][..],
+        ),
+        ("sweep-rotors.toml", "rotors-scalar.csv", &["--scalar"][..]),
+    ] {
+        let t = times(scene, out, extra);
+        assert!(!t.is_empty(), "{out}");
+        for cell in &t {
+            assert_eq!(cell.parse::<f64>().unwrap(), 0.7, "{out}: {cell}");
+        }
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
