@@ -260,6 +260,20 @@ impl PlanBatch {
             Self::Rkmk4(b) => b.run(h, steps),
         }
     }
+    /// `steps` ≥ 1 steps of which the last lands on T = `end`: `steps − 1` of h, then one of
+    /// T − t, t the batch's time before it — the last step a sweep's members take
+    /// (`Batch::run_to`), after steps of the run's own h.
+    pub fn run_landing(&mut self, h: f64, steps: u64, end: f64) -> Result<(), BatchError> {
+        if steps > 1 {
+            self.run(h, steps - 1)?;
+        }
+        let t = match self {
+            Self::Strang(b) => b.time(),
+            Self::Rk4(b) => b.time(),
+            Self::Rkmk4(b) => b.time(),
+        };
+        self.run(end - t, 1)
+    }
     /// The number of bodies.
     pub fn len(&self) -> usize {
         match self {

@@ -167,6 +167,7 @@ pub fn run(
     let job = ManyJob {
         spec,
         h,
+        end: scene.duration,
         marks: marks(steps, spec.stride),
         pool: pool.as_ref(),
         method: &scene.method,
@@ -192,6 +193,9 @@ pub fn run(
 struct ManyJob<'a> {
     spec: ManyBodiesSpec,
     h: f64,
+    /// T: the last step is T − t, t the time before it, so that the run lands on T as a sweep's
+    /// members do (`integrators::ensemble::Ensemble`, `batch::Batch::run_to`).
+    end: f64,
     /// The steps at which rows are written.
     marks: Vec<u64>,
     pool: Option<&'a rayon::ThreadPool>,
@@ -239,6 +243,7 @@ impl Job for ManyJob<'_> {
         };
         let mut clock = Clock::at(0.0);
         let mut taken = 0;
+        let last = self.marks.last().copied().unwrap_or(0);
         let mut rows: Vec<RowStats> = self
             .marks
             .iter()
@@ -247,7 +252,8 @@ impl Job for ManyJob<'_> {
                     clock.advance(self.h);
                 }
                 taken = m;
-                RowStats::new(clock.now(), m, observer.has_casimir())
+                let t = if m == last { self.end } else { clock.now() };
+                RowStats::new(t, m, observer.has_casimir())
             })
             .collect();
         let chunk = match plan {
@@ -308,7 +314,15 @@ impl Job for ManyJob<'_> {
                     for (k, row) in rows.iter_mut().enumerate() {
                         if k > 0 {
                             let stretch = self.marks[k] - self.marks[k - 1];
-                            on(self.pool, |_| b.run(self.h, stretch)).map_err(batch_failed)?;
+                            let (h, end) = (self.h, self.end);
+                            on(self.pool, |_| {
+                                if self.marks[k] == last {
+                                    b.run_landing(h, stretch, end)
+                                } else {
+                                    b.run(h, stretch)
+                                }
+                            })
+                            .map_err(batch_failed)?;
                         }
                         let read = |i: usize| {
                             b.running_state(i)
@@ -340,7 +354,7 @@ impl Job for ManyJob<'_> {
                     seen.clear();
                     seen.resize(members.len() * r, None);
                     let marks = &self.marks;
-                    let h = self.h;
+                    let (h, end) = (self.h, self.end);
                     let one = |(mu, out): (&Alg<M::G>, &mut [Option<Observation>])| {
                         let Ok(mut integ) = build(mu) else {
                             return;
@@ -353,7 +367,8 @@ impl Job for ManyJob<'_> {
                         };
                         out[0] = read(&integ);
                         for (k, slot) in out.iter_mut().enumerate().skip(1) {
-                            for _ in marks[k - 1]..marks[k] {
+                            for j in marks[k - 1]..marks[k] {
+                                let h = if j + 1 == last { end - integ.time() } else { h };
                                 if integ.step(h).is_err() {
                                     return;
                                 }
