@@ -7,6 +7,15 @@
 //! (for a processed method that read applies its processor P, part of the run's cost): the
 //! invariants are sampled every [`ENERGY_SAMPLE`] steps outside the timed intervals, so that the
 //! time measures the integrator, not the bookkeeping.
+//!
+//! On a machine busy with other work the scheduler takes the core away for whole time slices
+//! (milliseconds), and a wall clock charges each slice to the interval it fell in: every run
+//! longer than a slice would look several times slower per step than the short ones. Such an
+//! interval stands out, as a chunk of [`ENERGY_SAMPLE`] steps lasts microseconds: intervals more
+//! than [`INTERRUPTED`] times the run's median are counted at the mean of the others
+//! ([`Intervals`]). The thread's CPU clock would say the same directly, but reading it is a system
+//! call, as slow as several steps. On an idle machine no interval stands out and the figure is
+//! the plain sum.
 
 use crate::error::SimError;
 use crate::invariants::Monitor;
@@ -16,6 +25,65 @@ use std::time::{Duration, Instant};
 
 /// Steps between two energy samples (and two clock reads) in a timed run.
 pub const ENERGY_SAMPLE: u64 = 8;
+
+/// An interval of steps longer than this many times the run's median interval was interrupted
+/// (the thread was off the CPU during it): a time slice of another process, not the steps' cost.
+/// Far above what the steps vary by (rejected attempts, Newton iterations, the shortened last
+/// chunk), far below a time slice's length over a chunk's.
+pub const INTERRUPTED: f64 = 32.0;
+
+/// The durations of a run's timed intervals in octaves (bin b holds [2ᵇ, 2ᵇ⁺¹) ns): their count
+/// and sum per octave, in constant memory whatever the run's length.
+#[derive(Debug, Clone)]
+struct Intervals {
+    count: [u64; 64],
+    sum: [f64; 64],
+}
+
+impl Intervals {
+    fn new() -> Self {
+        Self {
+            count: [0; 64],
+            sum: [0.0; 64],
+        }
+    }
+
+    fn add(&mut self, d: Duration) {
+        let ns = d.as_nanos().max(1) as f64;
+        let bin = (ns.log2() as usize).min(63);
+        self.count[bin] += 1;
+        self.sum[bin] += ns;
+    }
+
+    /// The intervals' total, those in octaves above the median's by more than [`INTERRUPTED`]
+    /// counted at the mean of the others.
+    fn total(&self) -> Duration {
+        let n: u64 = self.count.iter().sum();
+        if n == 0 {
+            return Duration::ZERO;
+        }
+        let mut seen = 0;
+        let median = (0..64)
+            .find(|&b| {
+                seen += self.count[b];
+                2 * seen >= n
+            })
+            .unwrap_or(63);
+        // bins from `median + 1 + log2(INTERRUPTED)` start at INTERRUPTED times the median's top
+        let first_out = median + 1 + INTERRUPTED.log2() as usize;
+        let (mut kept, mut kept_n, mut out_n) = (0.0, 0u64, 0u64);
+        for b in 0..64 {
+            if b < first_out {
+                kept += self.sum[b];
+                kept_n += self.count[b];
+            } else {
+                out_n += self.count[b];
+            }
+        }
+        let ns = kept + out_n as f64 * kept / kept_n as f64;
+        Duration::from_nanos(ns.round() as u64)
+    }
+}
 
 /// The state compared at the final time.
 #[derive(Debug, Clone)]
@@ -93,7 +161,7 @@ fn timed(sim: &mut dyn Simulation, duration: f64, h: Option<f64>) -> Result<Time
         None => sim.time() == duration,
     };
     let mut monitor = Monitor::new(sim);
-    let mut stepping = Duration::ZERO;
+    let mut intervals = Intervals::new();
     let mut k = 0u64;
     let mut state = None;
     while !done(sim, k) {
@@ -117,7 +185,7 @@ fn timed(sim: &mut dyn Simulation, duration: f64, h: Option<f64>) -> Result<Time
             // The state at T is part of the run's cost: for a processed method, the processor.
             state = Some(FinalState::of(sim));
         }
-        stepping += start.elapsed();
+        intervals.add(start.elapsed());
         let e = monitor.sample(sim);
         if !e.is_finite() {
             if let Some(message) = sim.read_error() {
@@ -136,7 +204,7 @@ fn timed(sim: &mut dyn Simulation, duration: f64, h: Option<f64>) -> Result<Time
     Ok(Timed {
         state: state.unwrap_or_else(|| FinalState::of(sim)),
         steps: k,
-        stepping,
+        stepping: intervals.total(),
         max_energy_error: monitor.energy,
         max_casimir_error: monitor.casimir,
         max_momentum_map_error: monitor.momentum_map,
@@ -185,6 +253,30 @@ mod tests {
                 assert_eq!(sim.time(), duration, "{m} {v:?}");
             }
         }
+    }
+
+    /// Intervals a time slice long among microsecond ones are counted at the others' mean; with
+    /// none, or intervals that merely vary, the total is the plain sum.
+    #[test]
+    fn interrupted_intervals_count_at_the_mean_of_the_others() {
+        let us = |x: u64| Duration::from_nanos(x * 1000);
+        let mut i = Intervals::new();
+        for k in 0..1000 {
+            i.add(us(2 + k % 3));
+        }
+        let plain = i.total();
+        assert_eq!(plain, us(2999));
+        i.add(Duration::from_millis(4));
+        i.add(Duration::from_millis(9));
+        let mean = 2999.0 / 1000.0;
+        assert!((i.total().as_secs_f64() * 1e6 - mean * 1002.0).abs() < 1e-3);
+        // a spread of 13× (a chunk with rejected attempts, the shortened last one) is kept
+        let mut j = Intervals::new();
+        for k in 0..100 {
+            j.add(us(if k % 10 == 0 { 40 } else { 3 }));
+        }
+        assert_eq!(j.total(), us(10 * 40 + 90 * 3));
+        assert_eq!(Intervals::new().total(), Duration::ZERO);
     }
 
     #[test]
