@@ -12,10 +12,9 @@
 //! (milliseconds), and a wall clock charges each slice to the interval it fell in: every run
 //! longer than a slice would look several times slower per step than the short ones. Such an
 //! interval stands out, as a chunk of [`ENERGY_SAMPLE`] steps lasts microseconds: intervals more
-//! than [`INTERRUPTED`] times the run's median are counted at the mean of the others
-//! ([`Intervals`]). The thread's CPU clock would say the same directly, but reading it is a system
-//! call, as slow as several steps. On an idle machine no interval stands out and the figure is
-//! the plain sum.
+//! than [`INTERRUPTED`] times the run's median are counted at the mean of the others. The
+//! thread's CPU clock would say the same directly, but reading it is a system call, as slow as
+//! several steps. On an idle machine no interval stands out and the figure is the plain sum.
 
 use crate::error::SimError;
 use crate::invariants::Monitor;
