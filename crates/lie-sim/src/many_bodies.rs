@@ -153,17 +153,8 @@ pub fn run(
     progress: Option<&indicatif::ProgressBar>,
 ) -> Result<ManyBodiesOutput, SimError> {
     let (spec, steps, h) = plan(scene)?;
-    let pool = match threads {
-        Some(1) => None,
-        _ => Some(
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads.unwrap_or(0))
-                .build()
-                .map_err(|e| SimError::ManyBodies {
-                    message: format!("cannot start the thread pool: {e}"),
-                })?,
-        ),
-    };
+    let pool =
+        crate::sweep::thread_pool(threads).map_err(|message| SimError::ManyBodies { message })?;
     let job = ManyJob {
         spec,
         h,

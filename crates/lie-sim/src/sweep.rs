@@ -535,17 +535,7 @@ pub fn run<K: Sink>(
     progress: Option<&indicatif::ProgressBar>,
 ) -> Result<(SweepOutput, SweepSpec, Duration), SimError> {
     let (spec, steps, _) = plan(scene)?;
-    let pool = match threads {
-        Some(1) => None,
-        _ => Some(
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads.unwrap_or(0))
-                .build()
-                .map_err(|e| SimError::Sweep {
-                    message: format!("cannot start the thread pool: {e}"),
-                })?,
-        ),
-    };
+    let pool = thread_pool(threads).map_err(|message| SimError::Sweep { message })?;
     let job = SweepJob {
         spec,
         end: scene.duration,
@@ -723,6 +713,19 @@ pub fn merge(paths: &[PathBuf]) -> Result<(String, usize, usize), SimError> {
 /// Writes a merged table atomically.
 pub fn write(path: &Path, text: &str) -> Result<(), SimError> {
     write_atomic(path, text)
+}
+
+/// The pool of `threads` workers (all cores for `None`), or none for one thread: the sweep and
+/// the many-body runs then step on the calling thread. The error says why the pool did not start.
+pub(crate) fn thread_pool(threads: Option<usize>) -> Result<Option<rayon::ThreadPool>, String> {
+    match threads {
+        Some(1) => Ok(None),
+        _ => rayon::ThreadPoolBuilder::new()
+            .num_threads(threads.unwrap_or(0))
+            .build()
+            .map(Some)
+            .map_err(|e| format!("cannot start the thread pool: {e}")),
+    }
 }
 
 #[cfg(test)]
