@@ -5,7 +5,8 @@
 //!
 //! Groups (criterion's throughput is in bodies, so its `elem/s` are body-steps per second):
 //! - `batch/free_body`: 𝕀 = diag(1, 2, 3), 1024 bodies with |Π| = 1 drawn on the sphere, random
-//!   attitudes, h = 0.01, one step of every body per iteration: the scalar library's Strang step
+//!   attitudes, h = 0.01, 16 steps of every body per iteration (each body, or each block of 128
+//!   batched bodies, stepped 16 times in a row, as a sweep steps them): the scalar library's Strang step
 //!   (`Splitting`, with R), `QuaternionRk4` and `Rkmk4`, the hand-written NO_SQUISH and RK4, and
 //!   the batched Strang, RK4 and RKMK4 on each level this CPU runs (`avx512`, `avx2` forced on an
 //!   AVX-512 machine, `scalar`).
@@ -42,6 +43,10 @@ use no_squish::NoSquish;
 
 const H: f64 = 0.01;
 const N: usize = 1024;
+/// Steps of every body per iteration in `batch/free_body` and `batch/field`: each body (scalar)
+/// or block of bodies (batched) is stepped this many times in a row, as a sweep steps them, so
+/// that neither pays for reloading its state from L2 every step.
+const STEPS: usize = 16;
 const MOMENTS: [f64; 3] = [1.0, 2.0, 3.0];
 
 fn states(n: usize) -> (Vec<Vector3<f64>>, Vec<So3>) {
@@ -58,12 +63,32 @@ fn mgchi() -> Vector3<f64> {
     Vector3::new(0.1, -0.2, 0.5) * 1.5
 }
 
-/// One step of each of `integs` per iteration.
+/// [`STEPS`] steps of each of `integs` per iteration.
 fn scalar_steps<I: Integrator>(g: &mut BenchmarkGroup<'_, WallTime>, id: &str, mut integs: Vec<I>) {
     g.bench_function(id, |b| {
         b.iter(|| {
             for s in integs.iter_mut() {
-                s.step(black_box(H)).expect("step");
+                for _ in 0..STEPS {
+                    s.step(black_box(H)).expect("step");
+                }
+            }
+        })
+    });
+}
+
+/// [`STEPS`] steps of each of the hand-written `steppers` per iteration.
+fn hand_steps<T>(
+    g: &mut BenchmarkGroup<'_, WallTime>,
+    id: &str,
+    steppers: &mut [T],
+    step: impl Fn(&mut T, f64),
+) {
+    g.bench_function(id, |b| {
+        b.iter(|| {
+            for r in steppers.iter_mut() {
+                for _ in 0..STEPS {
+                    step(r, black_box(H));
+                }
             }
         })
     });
@@ -79,7 +104,7 @@ fn batch_steps<K: batch::Kernel>(
     for level in Level::available() {
         let mut b = Batch::new(kernel.clone(), pis, rs, level).expect("batch");
         g.bench_function(format!("{id}/{level}"), |bch| {
-            bch.iter(|| b.step(black_box(H)).expect("step"))
+            bch.iter(|| b.run(black_box(H), STEPS as u64).expect("steps"))
         });
     }
 }
@@ -102,7 +127,7 @@ fn free_body(c: &mut Criterion) {
     let (pis, rs) = states(N);
     let body = RigidBody::principal([MOMENTS[0], MOMENTS[1], MOMENTS[2]]).expect("body");
     let mut g = c.benchmark_group("batch/free_body");
-    g.throughput(Throughput::Elements(N as u64));
+    g.throughput(Throughput::Elements((N * STEPS) as u64));
     let strang: Vec<_> = (0..N)
         .map(|i| Splitting::new(body.clone(), pis[i], Some(rs[i])).expect("splitting"))
         .collect();
@@ -123,23 +148,11 @@ fn free_body(c: &mut Criterion) {
         })
         .collect();
     check_no_squish(&rotors[0], pis[0], rs[0]);
-    g.bench_function("hand/no_squish", |b| {
-        b.iter(|| {
-            for r in rotors.iter_mut() {
-                r.step(black_box(H));
-            }
-        })
-    });
+    hand_steps(&mut g, "hand/no_squish", &mut rotors, |r, h| r.step(h));
     let mut hand: Vec<HandRk4<false>> = (0..N)
         .map(|i| HandRk4::new(MOMENTS, Vector3::zeros(), pis[i], rs[i].as_matrix()))
         .collect();
-    g.bench_function("hand/rk4", |b| {
-        b.iter(|| {
-            for r in hand.iter_mut() {
-                r.step(black_box(H));
-            }
-        })
-    });
+    hand_steps(&mut g, "hand/rk4", &mut hand, |r, h| r.step(h));
     let model = BodyModel::free(&body).expect("model");
     batch_steps(
         &mut g,
@@ -157,7 +170,7 @@ fn field(c: &mut Criterion) {
     let (pis, rs) = states(N);
     let top = HeavyTop::principal(MOMENTS, 1.5, 1.0, mgchi() / 1.5).expect("top");
     let mut g = c.benchmark_group("batch/field");
-    g.throughput(Throughput::Elements(N as u64));
+    g.throughput(Throughput::Elements((N * STEPS) as u64));
     let strang: Vec<_> = (0..N)
         .map(|i| Splitting::new(top.clone(), pis[i], Some(rs[i])).expect("splitting"))
         .collect();
@@ -173,13 +186,7 @@ fn field(c: &mut Criterion) {
     let mut hand: Vec<HandRk4<true>> = (0..N)
         .map(|i| HandRk4::new(MOMENTS, mgchi(), pis[i], rs[i].as_matrix()))
         .collect();
-    g.bench_function("hand/rk4", |b| {
-        b.iter(|| {
-            for r in hand.iter_mut() {
-                r.step(black_box(H));
-            }
-        })
-    });
+    hand_steps(&mut g, "hand/rk4", &mut hand, |r, h| r.step(h));
     let model = BodyModel::heavy_top(&top).expect("model");
     batch_steps(
         &mut g,

@@ -10,11 +10,13 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-/// One run of a bench binary: the benchmarks in the order they ran, and their mean times (ns).
+/// One run of a bench binary: the benchmarks in the order they ran, their mean times (ns), and
+/// the elements per iteration of those that declare a criterion throughput.
 #[derive(Debug, Default, Clone)]
 pub struct Run {
     pub order: Vec<String>,
     pub mean_ns: HashMap<String, f64>,
+    pub elements: HashMap<String, u64>,
 }
 
 impl Run {
@@ -67,8 +69,9 @@ pub fn run(root: &Path, target_dir: &Path, args: &[String]) -> Result<Run> {
     }
     let estimates = estimates_by_id(&target_dir.join("criterion"))?;
     let mut mean_ns = HashMap::new();
+    let mut elements = HashMap::new();
     for id in &order {
-        let (path, mean) = estimates.get(id).ok_or_else(|| {
+        let (path, mean, count) = estimates.get(id).ok_or_else(|| {
             Error::parse(
                 "target/criterion",
                 format!("no estimates.json for benchmark {id:?}"),
@@ -85,12 +88,21 @@ pub fn run(root: &Path, target_dir: &Path, args: &[String]) -> Result<Run> {
             ));
         }
         mean_ns.insert(id.clone(), *mean);
+        if let Some(n) = count {
+            elements.insert(id.clone(), *n);
+        }
     }
-    Ok(Run { order, mean_ns })
+    Ok(Run {
+        order,
+        mean_ns,
+        elements,
+    })
 }
 
-/// Every `new/estimates.json` under `dir`, by the benchmark's title (its full id).
-fn estimates_by_id(dir: &Path) -> Result<HashMap<String, (PathBuf, f64)>> {
+/// Every `new/estimates.json` under `dir`, by the benchmark's title (its full id): its path, the
+/// mean, and the elements per iteration if the benchmark declares them.
+type Estimate = (PathBuf, f64, Option<u64>);
+fn estimates_by_id(dir: &Path) -> Result<HashMap<String, Estimate>> {
     let mut out = HashMap::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
@@ -99,8 +111,8 @@ fn estimates_by_id(dir: &Path) -> Result<HashMap<String, (PathBuf, f64)>> {
             let path = entry.map_err(|e| Error::io(&d, e))?.path();
             if path.is_dir() {
                 if path.file_name().is_some_and(|n| n == "new") {
-                    if let Some((id, mean)) = read_new(&path)? {
-                        out.insert(id, (path.join("estimates.json"), mean));
+                    if let Some((id, mean, count)) = read_new(&path)? {
+                        out.insert(id, (path.join("estimates.json"), mean, count));
                     }
                 } else {
                     stack.push(path);
@@ -116,8 +128,9 @@ fn read_json(path: &Path) -> Result<serde_json::Value> {
     serde_json::from_str(&text).map_err(|e| Error::parse(path.display().to_string(), e.to_string()))
 }
 
-/// The benchmark id and mean (ns) of one `new/` directory (`None` without both files).
-fn read_new(dir: &Path) -> Result<Option<(String, f64)>> {
+/// The benchmark id, mean (ns) and elements per iteration (criterion's `Throughput::Elements`)
+/// of one `new/` directory (`None` without both files).
+fn read_new(dir: &Path) -> Result<Option<(String, f64, Option<u64>)>> {
     let (bench, est) = (dir.join("benchmark.json"), dir.join("estimates.json"));
     if !bench.exists() || !est.exists() {
         return Ok(None);
@@ -130,7 +143,8 @@ fn read_new(dir: &Path) -> Result<Option<(String, f64)>> {
     let mean = read_json(&est)?["mean"]["point_estimate"]
         .as_f64()
         .ok_or_else(|| Error::parse(est.display().to_string(), "no mean.point_estimate"))?;
-    Ok(Some((id.to_string(), mean)))
+    let count = b["throughput"]["Elements"].as_u64();
+    Ok(Some((id.to_string(), mean, count)))
 }
 
 /// A ratio of two benchmarks of the run, and the bound it is held to, if any.
@@ -161,6 +175,13 @@ pub enum Table {
     },
     /// Chosen ratios, each against its bound (met or not).
     Ratios(&'static [Ratio]),
+    /// The benchmarks `PREFIX/NAME/N` as a table of time per element (criterion's throughput
+    /// in elements, named `element`): one row per N (ascending), two columns per NAME (in run
+    /// order): the mean over the elements of an iteration, and the elements per second.
+    Throughput {
+        prefix: &'static str,
+        element: &'static str,
+    },
 }
 
 /// The table of `run` in Markdown.
@@ -169,6 +190,7 @@ pub fn table(run: &Run, shape: &Table) -> Result<String> {
         Table::List { prefix, competitor } => list(run, prefix, competitor),
         Table::Pivot { groups, ratio } => pivot(run, groups, ratio),
         Table::Ratios(rows) => ratios(run, rows),
+        Table::Throughput { prefix, element } => throughput(run, prefix, element),
     }
 }
 
@@ -274,6 +296,75 @@ fn pivot(run: &Run, prefixes: &[&str], ratio: Option<(&[&str], &[&str])>) -> Res
     Ok(out)
 }
 
+fn throughput(run: &Run, prefix: &str, element: &str) -> Result<String> {
+    let mut names: Vec<&str> = Vec::new();
+    let mut sizes: Vec<u64> = Vec::new();
+    for id in &run.order {
+        let Some(rest) = id.strip_prefix(prefix).and_then(|r| r.strip_prefix('/')) else {
+            continue;
+        };
+        let (name, n) = rest.rsplit_once('/').ok_or_else(|| {
+            Error::parse("criterion run", format!("{id:?} is not {prefix}/NAME/N"))
+        })?;
+        let n: u64 = n.parse().map_err(|_| {
+            Error::parse("criterion run", format!("{id:?}: N = {n:?} is not a count"))
+        })?;
+        if !names.contains(&name) {
+            names.push(name);
+        }
+        if !sizes.contains(&n) {
+            sizes.push(n);
+        }
+    }
+    if names.is_empty() {
+        return Err(Error::parse(
+            "criterion run",
+            format!("no benchmark under {prefix:?}"),
+        ));
+    }
+    sizes.sort_unstable();
+    let mut out = String::from("| N |");
+    for name in &names {
+        out.push_str(&format!(" `{name}`: per {element} | {element}s/s |"));
+    }
+    out.push_str(&format!("\n|---:|{}\n", "---:|---:|".repeat(names.len())));
+    for n in &sizes {
+        out.push_str(&format!("| {n} |"));
+        for name in &names {
+            let id = format!("{prefix}/{name}/{n}");
+            match (run.mean_ns.get(&id), run.elements.get(&id)) {
+                (Some(t), Some(&e)) if e > 0 => {
+                    let per = t / e as f64;
+                    out.push_str(&format!(" {} | {} |", time_ns(per), rate(1e9 / per)));
+                }
+                (Some(_), _) => {
+                    return Err(Error::parse(
+                        "criterion run",
+                        format!("{id:?} declares no throughput in elements"),
+                    ))
+                }
+                (None, _) => out.push_str(" – | – |"),
+            }
+        }
+        out.push('\n');
+    }
+    Ok(out)
+}
+
+/// A rate per second with an SI prefix and three significant digits.
+fn rate(per_second: f64) -> String {
+    let (x, unit) = if per_second >= 1e9 {
+        (per_second / 1e9, "G")
+    } else if per_second >= 1e6 {
+        (per_second / 1e6, "M")
+    } else if per_second >= 1e3 {
+        (per_second / 1e3, "k")
+    } else {
+        (per_second, "")
+    };
+    format!("{}{unit}", crate::format::g3(x))
+}
+
 fn ratios(run: &Run, rows: &[Ratio]) -> Result<String> {
     let mut out = String::from("| | step | against | ratio | bound |\n|---|---:|---:|---:|---|\n");
     for r in rows {
@@ -314,7 +405,52 @@ mod tests {
         Run {
             order: ids.iter().map(|(i, _)| i.to_string()).collect(),
             mean_ns: ids.iter().map(|(i, t)| (i.to_string(), *t)).collect(),
+            elements: HashMap::new(),
         }
+    }
+
+    #[test]
+    fn a_throughput_table_has_a_row_per_size_and_the_time_per_element() {
+        let ids = [
+            ("batch/size/step/1024", 8_899.0, 1024),
+            ("batch/size/run/1024", 569_068.0, 65_536),
+            ("batch/size/step/64", 574.0, 64),
+        ];
+        let run = Run {
+            order: ids.iter().map(|(i, _, _)| i.to_string()).collect(),
+            mean_ns: ids.iter().map(|(i, t, _)| (i.to_string(), *t)).collect(),
+            elements: ids.iter().map(|(i, _, n)| (i.to_string(), *n)).collect(),
+        };
+        let t = table(
+            &run,
+            &Table::Throughput {
+                prefix: "batch/size",
+                element: "body-step",
+            },
+        )
+        .unwrap();
+        assert!(t.starts_with("| N | `step`: per body-step | body-steps/s | `run`: per body-step | body-steps/s |"), "{t}");
+        // N ascending; 64 has no `run`.
+        assert!(t.contains("| 64 | 8.97 ns | 111M | – | – |"), "{t}");
+        assert!(
+            t.contains("| 1024 | 8.69 ns | 115M | 8.68 ns | 115M |"),
+            "{t}"
+        );
+        assert!(
+            t.find("| 64 |").unwrap() < t.find("| 1024 |").unwrap(),
+            "{t}"
+        );
+        // A benchmark without a throughput is an error, not a silent per-iteration figure.
+        let mut bare = run.clone();
+        bare.elements.clear();
+        assert!(table(
+            &bare,
+            &Table::Throughput {
+                prefix: "batch/size",
+                element: "body-step"
+            }
+        )
+        .is_err());
     }
 
     #[test]

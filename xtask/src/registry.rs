@@ -1675,6 +1675,26 @@ pub fn all() -> Vec<Generator> {
                 ],
             }),
         },
+        Generator {
+            name: "bench-batch-size",
+            about: "the batched Strang step for N = 64 … 4·10⁶ bodies: one step of all per call (through the caches to memory) and 64 steps per call (compute-bound)",
+            takes: "2 min",
+            how: How::Bench(Bench {
+                bench: "batch",
+                filter: Some("batch/size"),
+                measurement_time: 2,
+                tables: &[(
+                    At {
+                        file: BENCH,
+                        part: "batch-size",
+                    },
+                    Table::Throughput {
+                        prefix: "batch/size",
+                        element: "body-step",
+                    },
+                )],
+            }),
+        },
     ]
 }
 

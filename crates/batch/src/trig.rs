@@ -106,24 +106,25 @@ pub(crate) fn sin_cos<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
     let nb = x * INV_PIO2 + ROUNDER;
     let n = nb - ROUNDER;
     let zero = k(s, 0.0);
-    let (sin, cos) = if n.eq(zero).not().any() {
-        let r = n.mul_add(k(s, -P1), x);
-        let r = n.mul_add(k(s, -P2), r);
-        let r = n.mul_add(k(s, -P3), r);
-        // Lanes with n = 0 take x itself: the same bits as the path without reduction (the
-        // terms above would turn x = −0 into +0, P₃ being negative).
-        let r = n.eq(zero).select(x, r);
-        let (ks, kc) = kernels(r);
-        // n mod 4: odd quadrants swap sin and cos; sin is negated in quadrants 2, 3 and cos in
-        // 1, 2.
-        let even = nb.bits_clear(1);
-        let (sa, ca) = (even.select(ks, kc), even.select(kc, ks));
-        let q_low = nb.bits_clear(2);
-        let q_next = (nb + 1.0).bits_clear(2);
-        (q_low.select(sa, -sa), q_next.select(ca, -ca))
-    } else {
-        kernels(x)
-    };
+    // n = 0 in every lane: |x| ≤ π/4 and finite everywhere, nothing to reduce and nothing out
+    // of range (NaN and ±∞ give n ≠ 0), so the kernels on x are the result.
+    if !n.eq(zero).not().any() {
+        return kernels(x);
+    }
+    let r = n.mul_add(k(s, -P1), x);
+    let r = n.mul_add(k(s, -P2), r);
+    let r = n.mul_add(k(s, -P3), r);
+    // Lanes with n = 0 take x itself: the same bits as the path without reduction (the
+    // terms above would turn x = −0 into +0, P₃ being negative).
+    let r = n.eq(zero).select(x, r);
+    let (ks, kc) = kernels(r);
+    // n mod 4: odd quadrants swap sin and cos; sin is negated in quadrants 2, 3 and cos in
+    // 1, 2.
+    let even = nb.bits_clear(1);
+    let (sa, ca) = (even.select(ks, kc), even.select(kc, ks));
+    let q_low = nb.bits_clear(2);
+    let q_next = (nb + 1.0).bits_clear(2);
+    let (sin, cos) = (q_low.select(sa, -sa), q_next.select(ca, -ca));
     // Beyond the reduction's range (and for ±∞, NaN): NaN, so that the body fails there.
     let wild = x.abs().le(k(s, REDUCTION_LIMIT)).not();
     let nan = k(s, f64::NAN);
