@@ -168,11 +168,16 @@ pub(crate) fn modified_step_limit<M: Model>(
 ) -> Option<f64> {
     let (theta, order) = match options.modified {
         Some(order) => (options.theta.unwrap_or(0.5), order),
-        None if kernel => match options.theta.unwrap_or(0.0) {
-            t if t == 0.5 => (0.5, 4),
-            t if t == 0.0 || t == 1.0 => (0.0, 4),
-            _ => return None,
-        },
+        None if kernel => {
+            let theta = options.theta.unwrap_or(0.0);
+            if theta == 0.5 {
+                (0.5, 4)
+            } else if theta == 0.0 || theta == 1.0 {
+                (0.0, 4)
+            } else {
+                return None;
+            }
+        }
         None => return None,
     };
     let scheme = ModifiedScheme::new(theta, order).ok()?;
