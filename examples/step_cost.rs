@@ -18,6 +18,10 @@
 //! `free/modified/<exp|cayley>/<0.5|0>/<4|6>`, `…/processed/<scheme>` (steps only) and
 //! `…/processed-read/<scheme>` (a step and a read, which applies the processor),
 //! `top/kinetic-kick/<strang|blanes-moan-4|blanes-moan-6>`, `top/processed-kk/<scheme>`;
+//! on the generalized rigid body of SO(n) (`so-n/<n>/…`, n ∈ {3, 4, 5, 6, 8, 10, 20, 50}, the
+//! sizes `lie-sim` compiles; J = diag(1 + i/n), a generic |M| ≈ 1 as in `benches/integrators.rs`,
+//! R reconstructed): `…/lp-cayley-0.5` (Newton), `…/lp-cayley-0.5-fp` (fixed point),
+//! `…/rkmk4` — the per-step costs `lie-sim`'s work limit counts (`crates/lie-sim/src/bounds.rs`);
 //! the embedded pairs `…/fixed/<pair>` (fixed steps of h) and `…/adaptive/<pair>` (n accepted
 //! steps under error control at rtol = atol = 1e-9, rejected attempts included), for `<pair>` one
 //! of `dopri5`, `dop853` (on (q, Π)), `rkmk-dopri5`, `rkmk-dop853`: the price of error control
@@ -31,11 +35,11 @@ use integrators::adaptive::{Adaptive, EmbeddedPair, RkmkDop853, RkmkDopri5, Tole
 use integrators::baselines::{QuaternionDop853, QuaternionDopri5, QuaternionRk4, Rkmk4};
 use integrators::processing::{Processed, ProcessingScheme};
 use integrators::splitting::{KineticKick, Splitting, SplittingScheme};
-use integrators::{Integrator, IntegratorError, LiePoisson, System};
-use lie_groups::{Cayley, ExpMap, LieGroup, So3};
+use integrators::{Integrator, IntegratorError, LiePoisson, SolverConfig, SolverKind, System};
+use lie_groups::{Cayley, ExpMap, LieGroup, So3, SoN, Vector};
 use mechanics::exact::FreeBodyFlow;
 use mechanics::modified::{ModifiedLiePoisson, ModifiedScheme};
-use mechanics::systems::{HeavyTop, RigidBody};
+use mechanics::systems::{GeneralizedRigidBody, HeavyTop, RigidBody};
 use nalgebra::Vector3;
 use std::hint::black_box;
 
@@ -88,6 +92,38 @@ fn pair<S: System<So3> + Clone>(
         ("rkmk-dop853", true) => accepted(RkmkDop853::new(system, pi0, g)?, n),
         _ => Err(IntegratorError::InvalidParameter {
             reason: format!("unknown embedded pair {name:?} (see the example's doc comment)"),
+        }),
+    }
+}
+
+/// n steps of `method` on the generalized rigid body of SO(N).
+fn so_n<const N: usize>(method: &str, n: usize) -> Result<f64, IntegratorError> {
+    let j: Vec<f64> = (0..N).map(|i| 1.0 + i as f64 / N as f64).collect();
+    let body = GeneralizedRigidBody::<N>::new(&j)?;
+    let d = SoN::<N>::DIM;
+    let mu0 = <<SoN<N> as LieGroup>::Algebra as Vector>::from_fn(d, |p| {
+        ((p as f64 * 0.7548776662).fract() - 0.5) * 2.0 / (d as f64).sqrt()
+    });
+    let g0 = Some(SoN::<N>::identity());
+    let read = |mut i: Box<dyn Integrator<Group = SoN<N>>>| -> Result<f64, IntegratorError> {
+        for _ in 0..n {
+            i.step(black_box(H))?;
+        }
+        Ok(Vector::get(&i.momentum(), 0))
+    };
+    match method {
+        "lp-cayley-0.5" => read(Box::new(LiePoisson::<SoN<N>, Cayley, _>::new(
+            body, 0.5, mu0, g0,
+        )?)),
+        "lp-cayley-0.5-fp" => read(Box::new(
+            LiePoisson::<SoN<N>, Cayley, _>::new(body, 0.5, mu0, g0)?.with_solver(SolverConfig {
+                kind: SolverKind::FixedPoint,
+                ..SolverConfig::default()
+            }),
+        )),
+        "rkmk4" => read(Box::new(Rkmk4::new(body, mu0, g0)?)),
+        _ => Err(IntegratorError::InvalidParameter {
+            reason: format!("unknown SO(n) method {method:?} (see the example's doc comment)"),
         }),
     }
 }
@@ -168,7 +204,7 @@ fn run<S: System<So3> + Clone + integrators::splitting::SplitSystem<So3>>(
 fn main() -> Result<(), IntegratorError> {
     let args: Vec<String> = std::env::args().collect();
     let (Some(method), Some(n)) = (args.get(1), args.get(2).and_then(|s| s.parse().ok())) else {
-        eprintln!("usage: step_cost <free|top>/<method> <steps>");
+        eprintln!("usage: step_cost <free|top|so-n>/<method> <steps>");
         std::process::exit(2);
     };
     let body = RigidBody::principal([1.0, 2.0, 3.0])?;
@@ -196,6 +232,22 @@ fn main() -> Result<(), IntegratorError> {
                 false,
             )?
         }
+    } else if let Some(m) = method.strip_prefix("so-n/") {
+        let (size, m) = m.split_once('/').unwrap_or((m, ""));
+        match size {
+            "3" => so_n::<3>(m, n)?,
+            "4" => so_n::<4>(m, n)?,
+            "5" => so_n::<5>(m, n)?,
+            "6" => so_n::<6>(m, n)?,
+            "8" => so_n::<8>(m, n)?,
+            "10" => so_n::<10>(m, n)?,
+            "20" => so_n::<20>(m, n)?,
+            "50" => so_n::<50>(m, n)?,
+            _ => {
+                eprintln!("so-n/<3|4|5|6|8|10|20|50>/<lp-cayley-0.5|lp-cayley-0.5-fp|rkmk4>");
+                std::process::exit(2);
+            }
+        }
     } else if let Some(m) = method.strip_prefix("free/") {
         let flow = FreeBodyFlow::new(&body);
         run(body, flow, Vector3::zeros(), m, n)?
@@ -205,7 +257,7 @@ fn main() -> Result<(), IntegratorError> {
         let flow = FreeBodyFlow::new(top.body());
         run(top, flow, mgchi, m, n)?
     } else {
-        eprintln!("usage: step_cost <free|top>/<method> <steps>");
+        eprintln!("usage: step_cost <free|top|so-n>/<method> <steps>");
         std::process::exit(2);
     };
     println!("{x}");

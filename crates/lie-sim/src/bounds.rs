@@ -2,9 +2,9 @@
 //! take and the bytes it will write, and refuses an estimate beyond [`MAX_STEPS`] or [`MAX_BYTES`]
 //! with the figures and the way to go ahead anyway (`--allow-large`). The estimates are exact
 //! counts of steps and rows; bytes are rows × columns × [`BYTES_PER_CELL`], an upper figure for
-//! the CSV's shortest round-trip numbers. Where the group is known (`run`), a step counts for
-//! its cost on the group relative to a step on SO(3) ([`stage_cost`]): 10⁸ steps on SO(50) are
-//! refused, not started.
+//! the CSV's shortest round-trip numbers. Where the group is known (`run`, `trade`, `sweep`), a
+//! step counts for its cost on the group relative to a step on SO(3) ([`stage_cost`], measured
+//! on SO(n) up to SO(50)): 10⁶ steps on SO(50), 10⁷ on SO(4), are refused, not started.
 
 use crate::error::SimError;
 
@@ -18,27 +18,114 @@ pub const MAX_BYTES: u128 = 1 << 30;
 pub const BYTES_PER_CELL: u128 = 25;
 
 /// Floating-point operations that cost about what a stage on SO(3) costs in all (its constant
-/// work — calls, checks, the monitor — dominates its few hundred flops there).
-///
-/// An order-of-magnitude scale, not a calibration: timing Lie–Poisson (τ = Cayley, Newton) on
-/// the geodesic SO(n) against the free rigid body puts a step on SO(10) and SO(50) at some 16
-/// times what [`stage_cost`] says (it counts one Newton factorization, not the iterations nor
-/// the Jacobian's assembly), on SO(20) at 0.7 times, and on SO(4) to SO(8), whose fixed cost
-/// per step (dynamically sized matrices) [`stage_cost`] leaves out, at some 250 to 370 steps
-/// on SO(3) where it counts 1. The limit stops runs of years, not of minutes.
+/// work — calls, checks, the monitor — dominates its few hundred flops there): the scale of
+/// [`stage_cost`] on the stack-allocated groups (SO(3), SE(2), SE(3), …) and of the Jacobian
+/// factorizations of a Newton iteration that refactors at every iteration.
 pub const FLOPS_PER_UNIT: u128 = 1000;
 
-/// The cost of one stage of a method relative to a stage on SO(3), at least 1: the group's
-/// products and exponentials on m×m matrices take ~m³ operations, an operator on the algebra
-/// ~d² to apply (d the algebra's dimension), and an implicit stage whose solver uses a Jacobian
-/// (`newton`) factors a d×d Newton matrix, ~d³/3; per [`FLOPS_PER_UNIT`]. On SO(50) with Newton
-/// (d = 1225): ~6·10⁵.
-pub fn stage_cost(algebra_dim: usize, matrix_side: Option<usize>, newton: bool) -> u128 {
+/// How a stage solves for its step, as far as its cost goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Solve {
+    /// Explicit: no equation solved.
+    Explicit,
+    /// An implicit stage iterated without refactoring a Jacobian at every iteration: fixed point,
+    /// or simplified Newton (the default), whose factored Jacobian serves the next steps too.
+    Iterated,
+    /// An implicit stage that builds and factors a d×d Jacobian at every iteration (`newton`,
+    /// `newton-finite-difference`).
+    Newton,
+}
+
+impl Solve {
+    /// The solve of a method (`explicit` from its `MethodInfo`) with the solver `kind`.
+    pub fn of(explicit: bool, kind: integrators::SolverKind) -> Self {
+        use integrators::SolverKind;
+        match (explicit, kind) {
+            (true, _) => Self::Explicit,
+            (false, SolverKind::FixedPoint | SolverKind::SimplifiedNewton) => Self::Iterated,
+            (false, _) => Self::Newton,
+        }
+    }
+}
+
+/// The fixed cost of a step on a group stored in dynamically sized matrices (`geodesic-so-n`:
+/// faer's), in steps on SO(3), (explicit, implicit): allocation and dispatch of each matrix
+/// operation, whatever n. With the per-dimension costs [`DYNAMIC_PER_DIMENSION`], from
+/// instruction counts (below).
+pub const DYNAMIC_FLOOR: (u128, u128) = (70, 175);
+
+/// The cost per dimension d of the algebra (per ½m² of the m×m matrices) of a step on a
+/// dynamically sized group, in steps on SO(3), (explicit, implicit), in thousandths: the
+/// products, exponentials and Cayley maps on m×m matrices (faer's blocked, vectorized kernels
+/// keep their instruction count near m² from SO(4) to SO(50), not m³).
+pub const DYNAMIC_PER_DIMENSION: (u128, u128) = (2600, 6400);
+
+/// Whether a system's group is stored in dynamically sized matrices (SO(n) of `geodesic-so-n`,
+/// whatever n, SO(3) included), whose per-step cost [`stage_cost`] counts with
+/// [`DYNAMIC_FLOOR`] and [`DYNAMIC_PER_DIMENSION`].
+pub fn dynamic_group(kind: crate::systems::SystemKind) -> bool {
+    matches!(kind, crate::systems::SystemKind::GeodesicSoN)
+}
+
+/// The cost of one stage of a method relative to a Lie–Poisson step (τ = Cayley, simplified
+/// Newton) of the free rigid body on SO(3), at least 1.
+///
+/// - **Dynamically sized groups** (`dynamic`: SO(n) of `geodesic-so-n`): `F + c·d` with the
+///   floor F = [`DYNAMIC_FLOOR`] and c = [`DYNAMIC_PER_DIMENSION`] (explicit, implicit), d =
+///   n(n−1)/2, fitted to instruction counts of Lie–Poisson (Cayley, θ = ½; fixed point and
+///   simplified Newton alike) and RKMK4 on the generalized rigid body, per step, over that of
+///   Lie–Poisson on the free body (904 instructions):
+///
+///   | n | LP measured | LP model | RKMK4 measured | RKMK4 model |
+///   |---|---|---|---|---|
+///   | 3 | 202 | 194 | | |
+///   | 4 | 229 | 213 | 90 | 85 |
+///   | 5 | 275 | 239 | | |
+///   | 6 | 306 | 271 | | |
+///   | 8 | 367 | 354 | | |
+///   | 10 | 521 | 463 | 196 | 187 |
+///   | 20 | 1474 (fixed point 1511) | 1391 | 528 | 564 |
+///   | 50 | fixed point 9133 | 8015 | 3834 | 3255 |
+///
+///   within 0.85 to 1.07 of the measurement (and so "within a factor 2"). Regenerate with
+///   valgrind (`examples/step_cost.rs`, its `so-n/…` cases):
+///
+///   ```text
+///   cargo build --release -p lie-integrators --example step_cost
+///   for n in 100 200; do
+///     valgrind --tool=callgrind --callgrind-out-file=/tmp/cg.$n \
+///       target/release/examples/step_cost so-n/4/lp-cayley-0.5 $n
+///   done   # (Ir(200) − Ir(100)) / 100 per step, over free/lp-cayley-0.5's
+///   ```
+///
+///   A [`Solve::Newton`] stage adds its d×d factorization, ~d³/3 flops per [`FLOPS_PER_UNIT`]
+///   (not measured: simplified Newton, the default, refactors rarely).
+/// - **Stack-allocated groups** (SO(3), SE(2), SE(3), their products): the group's products
+///   and exponentials on m×m matrices take ~m³ operations, an operator on the algebra ~d² to
+///   apply, a Newton stage's factorization ~d³/3, per [`FLOPS_PER_UNIT`] — 1 on every group of
+///   dimension ≤ 6, an order of magnitude, not a calibration.
+pub fn stage_cost(
+    algebra_dim: usize,
+    matrix_side: Option<usize>,
+    solve: Solve,
+    dynamic: bool,
+) -> u128 {
     let d = algebra_dim as u128;
+    let factorization = if solve == Solve::Newton {
+        d.pow(3) / 3 / FLOPS_PER_UNIT
+    } else {
+        0
+    };
+    if dynamic {
+        let (floor, per_dimension) = match solve {
+            Solve::Explicit => (DYNAMIC_FLOOR.0, DYNAMIC_PER_DIMENSION.0),
+            _ => (DYNAMIC_FLOOR.1, DYNAMIC_PER_DIMENSION.1),
+        };
+        return floor + per_dimension * d / 1000 + factorization;
+    }
     let m = matrix_side.unwrap_or(0) as u128;
-    let newton_flops = if newton { d.pow(3) / 3 } else { 0 };
-    let flops = m.pow(3).max(d.pow(2)) + newton_flops;
-    (flops / FLOPS_PER_UNIT).max(1)
+    let flops = m.pow(3).max(d.pow(2));
+    (flops / FLOPS_PER_UNIT + factorization).max(1)
 }
 
 /// What a command is about to do.
@@ -132,7 +219,70 @@ mod tests {
         };
         let e = costly.check("run", false).unwrap_err().to_string();
         assert!(e.contains("× 11") && e.contains("1.100e9"), "{e}");
-        assert_eq!(stage_cost(3, Some(3), true), 1);
-        assert!(stage_cost(1225, Some(50), true) > 500_000);
+        assert_eq!(stage_cost(3, Some(3), Solve::Newton, false), 1);
+        assert_eq!(stage_cost(3, Some(3), Solve::Iterated, false), 1);
+    }
+
+    /// The geodesic scene on SO(n) with Lie–Poisson (τ = Cayley, θ = ½, simplified Newton) at
+    /// h = 0.01 for `steps` steps.
+    fn so_n(n: usize, steps: u64) -> crate::scene::Scene {
+        let d = n * (n - 1) / 2;
+        let inertia: Vec<String> = (0..n)
+            .map(|i| format!("{}", 1.0 + 0.1 * i as f64))
+            .collect();
+        let momentum: Vec<String> = (0..d)
+            .map(|i| format!("{}", 0.1 / (1 + i) as f64))
+            .collect();
+        let text = format!(
+            "[system]\nkind = \"geodesic-so-n\"\nn = {n}\ninertia = [{}]\n\
+             [initial]\nmomentum = [{}]\n\
+             [integrator]\nmethod = \"lie-poisson\"\ntau = \"cayley\"\ntheta = 0.5\n\
+             step = 0.01\nduration = {}\n",
+            inertia.join(", "),
+            momentum.join(", "),
+            steps as f64 * 0.01
+        );
+        crate::scene::Scene::parse(&text, "so(n)", "so-n", Default::default()).unwrap()
+    }
+
+    /// `run` on SO(4) and SO(50) counts each step at its measured cost ([`stage_cost`]'s table):
+    /// beyond the limit it refuses, naming that cost, before it writes anything; within it the
+    /// run goes ahead. With the previous model (no floor for dynamically sized groups, SO(4)'s
+    /// step counted as 1 and SO(50)'s as 6·10⁵ where they cost 229 and ~9·10³) 10⁷ steps on
+    /// SO(4) were accepted and 10⁴ on SO(50) refused: both checks below fail (checked).
+    #[test]
+    fn so_n_runs_beyond_the_limit_are_refused_naming_their_cost_and_within_it_accepted() {
+        let dir = std::env::temp_dir().join(format!("lie-sim-bounds-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for (n, refused, accepted) in [(4usize, 10_000_000u64, 1000u64), (50, 1_000_000, 10_000)] {
+            let big = so_n(n, refused);
+            let cost = big.step_cost(false).unwrap();
+            assert!(cost > 100, "SO({n}): {cost}");
+            let out = dir.join(format!("so{n}.csv"));
+            let e = crate::run::run_scene(&big, &out, false, false)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(&format!("× {cost} ")), "SO({n}): {e}");
+            assert!(
+                !out.exists(),
+                "SO({n}): a refused run wrote {}",
+                out.display()
+            );
+            // Within the limit: the estimate passes (a run of 10⁴ steps on SO(50) takes tens of
+            // seconds; it is run to the end on a few steps below).
+            let fine = so_n(n, accepted);
+            let estimate = Estimate {
+                steps: u128::from(accepted),
+                bytes: 0,
+                step_cost: fine.step_cost(false).unwrap(),
+            };
+            assert!(
+                estimate.check("run", false).is_ok(),
+                "SO({n}): {estimate:?}"
+            );
+            let summary = crate::run::run_scene(&so_n(n, 3), &out, false, false).map(|_| ());
+            assert!(summary.is_ok(), "SO({n}): {summary:?}");
+        }
+        std::fs::remove_dir_all(&dir).ok();
     }
 }

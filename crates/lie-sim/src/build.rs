@@ -234,10 +234,11 @@ impl Job for Rate {
 }
 
 /// The cost of a step of the built simulation `sim` relative to one on SO(3) ([`crate::bounds::stage_cost`]): its
-/// group's sizes, with a Newton matrix when it is implicit and `solver` is not fixed-point.
-pub fn step_cost(sim: &dyn crate::sim::Simulation, solver: &SolverOptions) -> u128 {
-    let newton = !sim.info().explicit && !fixed_point(solver);
-    crate::bounds::stage_cost(sim.momentum_dim(), sim.group_side(), newton)
+/// group's sizes, how `solver` solves it when it is implicit, and whether its group is
+/// dynamically sized (`dynamic`, [`crate::bounds::dynamic_group`]).
+pub fn step_cost(sim: &dyn crate::sim::Simulation, solver: &SolverOptions, dynamic: bool) -> u128 {
+    let solve = crate::bounds::Solve::of(sim.info().explicit, solver.config().kind);
+    crate::bounds::stage_cost(sim.momentum_dim(), sim.group_side(), solve, dynamic)
 }
 
 /// Whether the solver iterates without a Jacobian.

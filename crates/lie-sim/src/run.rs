@@ -217,7 +217,11 @@ pub fn run_scene(
     let estimate = crate::bounds::Estimate {
         steps: n.saturating_mul(stages),
         bytes: crate::bounds::Estimate::csv(rows, sim.columns() as u128),
-        step_cost: crate::build::step_cost(sim.as_ref(), &scene.solver),
+        step_cost: crate::build::step_cost(
+            sim.as_ref(),
+            &scene.solver,
+            crate::bounds::dynamic_group(scene.system.kind()),
+        ),
     };
     estimate.check("run", allow_large)?;
     run_simulation(sim.as_mut(), scene, out, progress)

@@ -463,11 +463,12 @@ impl Scene {
     /// candidates include implicit methods).
     pub fn step_cost(&self, implicit: bool) -> Result<u128, SimError> {
         let sim = crate::build::build(&self.system, &self.method, self.reconstruct, &self.solver)?;
-        let newton = (implicit || !sim.info().explicit) && !crate::build::fixed_point(&self.solver);
+        let explicit = sim.info().explicit && !implicit;
         Ok(crate::bounds::stage_cost(
             sim.momentum_dim(),
             sim.group_side(),
-            newton,
+            crate::bounds::Solve::of(explicit, self.solver.config().kind),
+            crate::bounds::dynamic_group(self.system.kind()),
         ))
     }
 

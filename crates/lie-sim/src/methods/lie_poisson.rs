@@ -10,7 +10,7 @@ use crate::sim::Boxed;
 use crate::taus::{with_tau, TauKind, TauVisitor};
 use integrators::{LiePoisson, SolverConfig};
 use lie_groups::{Cayley, CayleyGroup, ExpMap, LieGroup, So3, Tau};
-use mechanics::modified::{ModifiedLiePoisson, ModifiedScheme};
+use mechanics::modified::{ModifiedLiePoisson, ModifiedRigidBody, ModifiedScheme};
 use mechanics::RigidBody;
 use nalgebra::Vector3;
 
@@ -150,5 +150,67 @@ impl FreeBodyVisitor for Modified<'_> {
                 ))
             }
         })
+    }
+}
+
+/// The step limit of the free body's modified Hamiltonian for this configuration
+/// (`mechanics::modified::ModifiedRigidBody::step_limit` at μ₀): with `modified`, its own
+/// scheme's, where the step refuses beyond it; otherwise (`kernel`) the order-4 scheme of the
+/// Lie–Poisson kernel's τ and θ (θ = 1 read as θ = 0, its adjoint, which has the same even
+/// modified Hamiltonian on the free body), whose inverse is the rate ω_K the kernel's error
+/// grows with: its h² term bends H by (hω_K)² (on a thin rod far above |Ω|). `None` off the
+/// free body, for another τ or θ, or without `modified` unless `kernel`.
+pub(crate) fn modified_step_limit<M: Model>(
+    options: &Options,
+    model: &M,
+    mu0: Alg<M::G>,
+    kernel: bool,
+) -> Option<f64> {
+    let (theta, order) = match options.modified {
+        Some(order) => (options.theta.unwrap_or(0.5), order),
+        None if kernel => {
+            let theta = options.theta.unwrap_or(0.0);
+            if theta == 0.5 {
+                (0.5, 4)
+            } else if theta == 0.0 || theta == 1.0 {
+                (0.0, 4)
+            } else {
+                return None;
+            }
+        }
+        None => return None,
+    };
+    let scheme = ModifiedScheme::new(theta, order).ok()?;
+    let visitor = ModifiedLimit {
+        tau: options.tau.unwrap_or(TauKind::Cayley),
+        scheme,
+    };
+    model.free_body(visitor, mu0, None).ok().flatten()
+}
+
+/// The step limit of a modified Hamiltonian on the free body.
+struct ModifiedLimit {
+    tau: TauKind,
+    scheme: ModifiedScheme,
+}
+
+impl FreeBodyVisitor for ModifiedLimit {
+    type Out<G: LieGroup> = Option<f64>;
+    fn visit(self, body: &RigidBody, mu0: Vector3<f64>, _g0: Option<So3>) -> Option<f64> {
+        let body = body.clone();
+        #[allow(unreachable_patterns)]
+        match self.tau {
+            TauKind::Exp => Some(
+                ModifiedRigidBody::<ExpMap>::new(body, self.scheme, 0.0)
+                    .ok()?
+                    .step_limit(&mu0),
+            ),
+            TauKind::Cayley => Some(
+                ModifiedRigidBody::<Cayley>::new(body, self.scheme, 0.0)
+                    .ok()?
+                    .step_limit(&mu0),
+            ),
+            _ => None,
+        }
     }
 }

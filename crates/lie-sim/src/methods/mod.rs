@@ -206,6 +206,32 @@ impl MethodSpec {
             (None, None) => "-".into(),
         }
     }
+    /// The largest step this configuration takes from μ₀ where it is set by the state rather
+    /// than by the row's [`row::Row::step_limit`] (hω): the modified Hamiltonian's
+    /// (`mechanics::modified::ModifiedLiePoisson::step_limit`, refused beyond); `None`: the
+    /// row's limit alone.
+    // Read by the extremes harness only, a test, as the row's limit.
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub fn state_step_limit<M: Model>(&self, model: &M, mu0: &Alg<M::G>) -> Option<f64> {
+        if self.method == MethodId::LiePoisson {
+            lie_poisson::modified_step_limit(&self.options(), model, mu0.clone(), false)
+        } else {
+            None
+        }
+    }
+    /// The rate the error of this configuration's base step grows with at μ₀ where it is not
+    /// the system's characteristic rate: the Lie–Poisson kernel's on the free body, ω_K = 1 /
+    /// (the order-4 modified Hamiltonian's step limit), whose h² term bends H by (hω_K)² — on
+    /// a thin rod some 10²|Ω| (`lie_poisson::modified_step_limit`); `None`: the system's rate.
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub fn kernel_rate<M: Model>(&self, model: &M, mu0: &Alg<M::G>) -> Option<f64> {
+        if self.method == MethodId::LiePoisson {
+            lie_poisson::modified_step_limit(&self.options(), model, mu0.clone(), true)
+                .map(|limit| 1.0 / limit)
+        } else {
+            None
+        }
+    }
     /// Base-method steps per step: the composition's or the processing kernel's stages, 1
     /// otherwise (a processed method also pays its processor's stages at each read).
     pub fn stages(&self) -> usize {

@@ -103,8 +103,10 @@ pub struct Row {
     /// system's characteristic rate |∂h/∂μ| (`integrators::System::characteristic_rate`; |Ω| on
     /// a rigid body), for every configuration `trade` runs of it (its compositions' largest
     /// substep included); `None`: any step. Beyond it a step may be refused
-    /// (`StepTooLarge`, `NoConvergence`), leaving the state as it was. Checked by the extremes
-    /// harness (`crate::extremes`).
+    /// (`StepTooLarge`, `NoConvergence`), leaving the state as it was. A configuration whose
+    /// limit the state sets beyond this one declares it where it is computed and refused
+    /// (the modified Hamiltonian's, `super::MethodSpec::state_step_limit`). Checked by the
+    /// extremes harness (`crate::extremes`).
     // Read by that harness only, a test, until a command warns of a step beyond it.
     #[cfg_attr(not(test), allow(dead_code))]
     pub step_limit: Option<f64>,

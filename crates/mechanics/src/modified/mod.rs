@@ -38,7 +38,7 @@ mod modified_rigid_body;
 
 use integrators::IntegratorError;
 pub use modified_lie_poisson::ModifiedLiePoisson;
-pub use modified_rigid_body::{ModifiedRigidBody, ModifiedTau};
+pub use modified_rigid_body::{ModifiedRigidBody, ModifiedTau, CURVATURE_LIMIT};
 
 /// Which modified Hamiltonian the Lie–Poisson kernel integrates: θ ∈ {½, 0} of the kernel and the
 /// order 4 (`H − h²H₂`) or 6 (`H − h²H₂ − h⁴H₄`).

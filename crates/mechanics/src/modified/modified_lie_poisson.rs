@@ -21,7 +21,9 @@ use nalgebra::Vector3;
 ///
 /// The kernel is rebuilt (a copy of the body, no allocation) only when h changes. Errors as
 /// [`LiePoisson`]: a non-finite h, a step beyond τ's domain or without Newton convergence leave
-/// the state untouched.
+/// the state untouched; and a step beyond [`ModifiedLiePoisson::step_limit`], where the
+/// modification no longer is a perturbation of H, is refused
+/// ([`IntegratorError::StepTooLarge`], naming h and the limit) with the state untouched.
 ///
 /// ```
 /// use mechanics::modified::{ModifiedLiePoisson, ModifiedScheme};
@@ -46,6 +48,9 @@ use nalgebra::Vector3;
 pub struct ModifiedLiePoisson<T: ModifiedTau> {
     body: RigidBody,
     scheme: ModifiedScheme,
+    /// [`ModifiedRigidBody::step_limit`] on the orbit of the state set last (|Π|² is kept to
+    /// round-off, H to O(hᵖ): the limit holds for the run).
+    step_limit: f64,
     kernel: LiePoisson<So3, T, ModifiedRigidBody<T>>,
 }
 
@@ -68,12 +73,20 @@ impl<T: ModifiedTau> ModifiedLiePoisson<T> {
         r0: Option<So3>,
     ) -> Result<Self, IntegratorError> {
         let modified = ModifiedRigidBody::new(body.clone(), scheme, 0.0)?;
+        let step_limit = modified.step_limit(&pi0);
         let kernel = LiePoisson::new(modified, scheme.theta(), pi0, r0)?;
         Ok(Self {
             body,
             scheme,
+            step_limit,
             kernel,
         })
+    }
+    /// The largest |h| a step takes ([`ModifiedRigidBody::step_limit`] on the orbit of the
+    /// state given at construction or [`ModifiedLiePoisson::reset`]): beyond it the modification
+    /// bends H̃ more than [`super::CURVATURE_LIMIT`] allows and the step is refused.
+    pub fn step_limit(&self) -> f64 {
+        self.step_limit
     }
     /// The θ and order.
     pub fn scheme(&self) -> ModifiedScheme {
@@ -91,7 +104,9 @@ impl<T: ModifiedTau> ModifiedLiePoisson<T> {
         pi: Vector3<f64>,
         r: Option<So3>,
     ) -> Result<(), IntegratorError> {
-        self.kernel.reset(t, pi, r)
+        self.kernel.reset(t, pi, r)?;
+        self.step_limit = self.kernel.system().step_limit(&pi);
+        Ok(())
     }
     /// The (unmodified) body.
     pub fn body(&self) -> &RigidBody {
@@ -109,6 +124,23 @@ impl<T: ModifiedTau> Integrator for ModifiedLiePoisson<T> {
     fn step(&mut self, h: f64) -> Result<(), IntegratorError> {
         if !h.is_finite() {
             return Err(IntegratorError::NonFinite { what: "step h" });
+        }
+        if h.abs() > self.step_limit {
+            return Err(IntegratorError::StepTooLarge {
+                step: h,
+                reason: format!(
+                    "the modified Hamiltonian of order {} is valid for |h| ≤ {:e} on this orbit \
+                     (beyond, h²H₂{} bends H̃ by more than {} times H's curvature)",
+                    self.scheme.order(),
+                    self.step_limit,
+                    if self.scheme.order() == 6 {
+                        " + h⁴H₄"
+                    } else {
+                        ""
+                    },
+                    super::CURVATURE_LIMIT
+                ),
+            });
         }
         if self.kernel.system().step_size() != h {
             let (t, pi, r) = self.kernel.snapshot();

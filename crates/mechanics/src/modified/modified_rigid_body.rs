@@ -201,6 +201,92 @@ fn cubic(c: &[f64; 10], y: &Vector3<f64>) -> (f64, Vector3<f64>, Matrix3<f64>) {
     (value, grad, hess)
 }
 
+/// How far the modification may bend H̃ away from H: the step limit of
+/// [`ModifiedRigidBody::step_limit`] keeps `‖𝕀^{1/2} ∇²(h²H₂ + h⁴H₄) 𝕀^{1/2}‖₂ ≤ CURVATURE_LIMIT`
+/// on the orbit, so that `∇²H̃ = 𝕀⁻¹ − ∇²(h²H₂ + h⁴H₄)` stays positive definite (H̃'s Legendre
+/// map is invertible and the modified flow a perturbation of H's). Beyond it the series
+/// `H + h²H₂ + h⁴H₄ + …` the modification is taken from is not valid: its terms grow like powers
+/// of that curvature (measured: `tests/models/modified.rs`, `step_limit_is_where_the_order_breaks`).
+pub const CURVATURE_LIMIT: f64 = 1.0;
+
+/// The bounds ρₖ of `‖𝕀^{1/2} ∇²_p Hₖ 𝕀^{1/2}‖₂` over the box `|pᵢ| ≤ bᵢ` for a table of
+/// coefficients `c` of monomials `yᵐ = p^{2m}` (principal coordinates p, moments `moments`):
+/// Gershgorin's row sums of the entry bounds
+///
+/// ```text
+/// |∂²p^{2m}/∂pᵢ²|     ≤ 2mᵢ(2mᵢ − 1) b^{2m − 2eᵢ},   |∂²p^{2m}/∂pᵢ∂pⱼ| ≤ 4mᵢmⱼ b^{2m − eᵢ − eⱼ},
+/// ```
+///
+/// each times √(IᵢIⱼ).
+fn curvature_bound<const N: usize>(
+    c: &[f64; N],
+    monomials: &[[u8; 3]; N],
+    moments: &Vector3<f64>,
+    b: &Vector3<f64>,
+) -> f64 {
+    let mut s = Matrix3::<f64>::zeros();
+    for (ck, m) in c.iter().zip(monomials) {
+        for i in 0..3 {
+            for j in 0..3 {
+                let (mi, mj) = (f64::from(m[i]), f64::from(m[j]));
+                let (k, mut e) = if i == j {
+                    (2.0 * mi * (2.0 * mi - 1.0), [2 * m[0], 2 * m[1], 2 * m[2]])
+                } else {
+                    (4.0 * mi * mj, [2 * m[0], 2 * m[1], 2 * m[2]])
+                };
+                if k == 0.0 {
+                    continue;
+                }
+                e[i] -= 1;
+                e[j] -= 1;
+                let power = (0..3).fold(1.0, |acc, l| acc * b[l].powi(i32::from(e[l])));
+                s[(i, j)] += ck.abs() * k * power * (moments[i] * moments[j]).sqrt();
+            }
+        }
+    }
+    (0..3).map(|i| s.row(i).sum()).fold(0.0, f64::max)
+}
+
+/// The largest |h| for which the modification of `scheme` stays within [`CURVATURE_LIMIT`] on
+/// the orbit through Π (see [`ModifiedRigidBody::step_limit`]).
+fn step_limit_of<T: ModifiedTau>(
+    body: &RigidBody,
+    scheme: ModifiedScheme,
+    pi: &Vector3<f64>,
+) -> f64 {
+    let (axes, moments) = body.principal_frame();
+    let p = if body.is_diagonal() {
+        *pi
+    } else {
+        axes.transpose() * pi
+    };
+    let big = p.amax();
+    if !big.is_finite() || big == 0.0 {
+        return f64::INFINITY;
+    }
+    // Scale-free: p̂ = p/σ, σ the power of two nearest |p|_max, and the limit at p is the one
+    // at p̂ over σ (M(h, p) = M(hσ, p̂)/σ² term by term: H₂, H₄ are homogeneous of degree 4, 6).
+    let (inv_sigma, _) = step_scale(big);
+    let p = p * inv_sigma;
+    let u = moments.map(|m| 1.0 / m);
+    let y = p.map(|x| x * x);
+    // The box the orbit lies in: |pᵢ|² ≤ |p|² (the Casimir) and uᵢpᵢ² ≤ 2H (the energy).
+    let two_h: f64 = (0..3).map(|i| u[i] * y[i]).sum();
+    let c = y.sum();
+    let b = moments.map(|m| (c.min(two_h * m)).sqrt());
+    let (t2, t4) = coefficients::tables(T::CAYLEY, scheme.theta() == 0.5);
+    let g2 = curvature_bound(&collapse(t2, &QUADRATIC, &u), &QUADRATIC, moments, &b);
+    let g4 = if scheme.order() == 6 {
+        curvature_bound(&collapse(t4, &CUBIC, &u), &CUBIC, moments, &b)
+    } else {
+        0.0
+    };
+    // ρ(ĥ) = g₂ĥ² + g₄ĥ⁴ = L: x = ĥ² the positive root, in the form without cancellation.
+    let l = CURVATURE_LIMIT;
+    let x = 2.0 * l / (g2 + (g2 * g2 + 4.0 * g4 * l).sqrt());
+    x.sqrt() * inv_sigma
+}
+
 /// The free rigid body with the Hamiltonian modified for the step h of the Lie–Poisson scheme
 /// with τ = `T` and the θ and order of a [`ModifiedScheme`]:
 ///
@@ -275,6 +361,19 @@ impl<T: ModifiedTau> ModifiedRigidBody<T> {
             h,
             _tau: core::marker::PhantomData,
         })
+    }
+    /// The largest |h| for which this scheme's modification stays a perturbation on the orbit
+    /// through Π: `‖𝕀^{1/2} ∇²(h²H₂ + h⁴H₄) 𝕀^{1/2}‖₂ ≤` [`CURVATURE_LIMIT`] wherever the free
+    /// body's orbit through Π goes (the box |pᵢ|² ≤ min(|Π|², 2H Iᵢ) in the principal frame,
+    /// bounded by Gershgorin's row sums of the Hessian entries' bounds over it).
+    ///
+    /// The limit is `h ω_m ≲ 1` with ω_m the modification's own rate, which is not |Ω|: for
+    /// τ = exp, θ = ½ (H₂ = −Π̇ᵀ𝕀⁻¹Π̇/24), `I₁ ∂²(h²H₂)/∂Π₁² = (h²/12)(u₂(u₁ − u₃)²Π₃² +
+    /// u₃(u₁ − u₂)²Π₂²)/u₁` (uᵢ = 1/Iᵢ), which on a thin rod (I₁ ≪ I₂ ≈ I₃) is
+    /// `(hΩ₃)² (I₃/I₁)/12`: ω_m ≈ |Ω₃| √(I₃/I₁)/√12, some 230 |Ω| on the rod of inertia ratio
+    /// 10⁶ at its separatrix (where |Π₃| ≈ 10⁶|Π₁|). Infinite for Π = 0 or a sphere.
+    pub fn step_limit(&self, pi: &Vector3<f64>) -> f64 {
+        step_limit_of::<T>(&self.body, self.scheme, pi)
     }
     /// The step h the Hamiltonian is modified for.
     pub fn step_size(&self) -> f64 {
