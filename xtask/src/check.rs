@@ -6,6 +6,8 @@
 //!   calendar date, no "this session", "at commit", "earlier the same day". History is in git.
 //! - No comment line of the Rust sources quotes a timing (`54 ns`, `0.6 µs`) or an instruction
 //!   count: the benches and docs/benchmarks.md hold the numbers, comments say why.
+//! - No unit test sits in a target built without its test harness (`test = false`), where it
+//!   would never run ([`crate::harnessless`]).
 
 use crate::region;
 use crate::registry;
@@ -108,6 +110,7 @@ pub fn check(root: &Path) -> Vec<String> {
             }
         }
     }
+    problems.extend(crate::harnessless::problems(root));
     // Declared regions in files that do not exist.
     for (f, k) in &declared {
         if !root.join(f).exists() {

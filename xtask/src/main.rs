@@ -22,6 +22,7 @@ mod error;
 mod exec;
 mod format;
 mod generate;
+mod harnessless;
 mod region;
 mod registry;
 mod test_output;

@@ -824,7 +824,7 @@ fn cmd_trade(
         &ladder.steps,
         repeats as usize,
         reference,
-        |r| match &bar {
+        &mut |r| match &bar {
             Some(b) => {
                 b.inc(1);
                 b.suspend(|| say!("{}", trade::table_line(r)));

@@ -523,15 +523,22 @@ pub fn magic_line(members: usize, shard: Shard, fingerprint: u64) -> String {
     )
 }
 
+/// The rows of a sweep as `lie-sim sweep` writes them: to a buffered file.
+pub type FileRows = CsvRows<std::io::BufWriter<std::fs::File>>;
+
 /// Runs `shard` of the scene's sweep on `threads` threads (1: sequentially on this thread; `None`:
 /// rayon's default, one per core), its members' summaries going to `sink` a chunk at a time;
 /// `progress` counts the members done.
-pub fn run<K: Sink>(
+///
+/// The sink is the concrete [`FileRows`], not any [`Sink`]: the sweep is generic over every
+/// system and method, and a generic entry point would be compiled again (all of it) in every
+/// crate that calls it — the command, each test binary — where this one is compiled once, here.
+pub fn run(
     scene: &Scene,
     shard: Shard,
     threads: Option<usize>,
     scalar: bool,
-    sink: &mut K,
+    sink: &mut FileRows,
     progress: Option<&indicatif::ProgressBar>,
 ) -> Result<(SweepOutput, SweepSpec, Duration), SimError> {
     let (spec, steps, _) = plan(scene)?;

@@ -212,13 +212,14 @@ pub struct TradeReport {
 /// initial state and the fastest stepping time kept (the minimum is the least disturbed by other
 /// load on the machine; the numbers themselves are identical between repeats). `on_row` sees each
 /// row as soon as it is measured; `reference` is what every run is compared with
-/// ([`crate::reference::reference`]).
+/// ([`crate::reference::reference`]). (`on_row` is a trait object so that the trade is compiled
+/// once, in this crate, not again in every caller.)
 pub fn trade(
     scene: &Scene,
     ladder: &[f64],
     repeats: usize,
     reference: Reference,
-    mut on_row: impl FnMut(&TradeRow),
+    on_row: &mut dyn FnMut(&TradeRow),
 ) -> Result<TradeReport, SimError> {
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
