@@ -98,9 +98,12 @@ impl RigidBodySe3 {
         check_positive(mass, "mass m")?;
         let body = RigidBody::new(inertia)?;
         // 𝕀 is symmetric positive definite (checked by RigidBody::new): its inverse exists.
-        let inertia_inv = inertia.try_inverse().ok_or_else(|| IntegratorError::InvalidParameter {
-            reason: format!("inertia tensor {inertia} is singular"),
-        })?;
+        let inertia_inv =
+            inertia
+                .try_inverse()
+                .ok_or_else(|| IntegratorError::InvalidParameter {
+                    reason: format!("inertia tensor {inertia} is singular"),
+                })?;
         Ok(Self {
             body,
             inertia_inv,
@@ -228,10 +231,11 @@ impl System<Se3> for RigidBodySe3 {
     /// scaling of Kepler's third law). Weighting the errors by where they are made (an error
     /// at periapsis moves the energy, hence the period, more) tilts the optimum to
     /// r^{−3/2 − k/(p+1)} for a weight r^{−k}, within 1/(p+1) of 3/2. Measured on
-    /// `examples/scenes/eccentric-orbit.toml` (e = 0.7, kinetic–kick with Blanes–Moan 6 and
-    /// Kahan–Li 8 ∘ splitting): r^{−3/2} takes the fewest steps at an error of 1e-6; r^{−5/4},
-    /// r^{−7/4} and r^{−2} (the rate of the true anomaly, |x × ẋ|/r²) take 15 %, 20 % and
-    /// 100 % more.
+    /// `examples/scenes/eccentric-orbit.toml` (e = 0.7; √(GM/a³)(a/r)^α with a from the
+    /// vis-viva equation in place of n): r^{−3/2} takes the fewest steps, and r^{−5/4}, r^{−7/4}
+    /// and r^{−2} take 40 %, 30 % and 50 % more for kinetic–kick with Blanes–Moan 6 at an error
+    /// of 1e-6, 45 %, 20 % and 35 % more for Kahan–Li 8 ∘ splitting at 1e-9 (the rate of the
+    /// true anomaly |x × ẋ|/r², ∝ r^{−2}, as r^{−2}).
     ///
     /// [`DensityScope::SpinFollowed`]: `ρ = √(½‖J‖²_F + GM/r³)` with `J = Π̂ 𝕀⁻¹ − Ω̂` the
     /// Jacobian of Euler's equations Π̇ = Π × Ω: the frequency at which Π nutates in the body
@@ -250,9 +254,10 @@ impl System<Se3> for RigidBodySe3 {
     /// frame turn at the coning rate |Π|/I₁. With the speed in its place (this density's first
     /// form) the long apoapsis steps of the scene's spinning body (5 rad/s, λ = 0.5 rad/s)
     /// reached h|Ω| ≈ π there, and kinetic–kick's error at T jumped up and down with ε
-    /// (6.5e-6 at ε = 0.25, 4.1e-5 at ε = 0.30); with the frequency it falls smoothly as ε⁶,
-    /// the attitude's and the orbit's errors alike, and the error of 1e-6 takes 128 steps
-    /// instead of 161 (test `kinetic_kick_on_the_spinning_satellite_meets_1e_6_at_a_quarter_of_fixed_steps`).
+    /// (6.5e-6 at ε = 0.25, 4.1e-5 at ε = 0.30); with the frequency it falls at every rung, the
+    /// attitude's and the orbit's errors alike, and every run from 136 steps on meets 1e-6,
+    /// from 169 with the speed, 673 on fixed steps (test
+    /// `kinetic_kick_on_the_spinning_satellite_meets_1e_6_at_a_quarter_of_fixed_steps`).
     ///
     /// Even in μ (|Ω|² and ‖J‖², quadratic in Π, are). The free body, or a satellite without
     /// g: |Ω| for either scope (its motion has no other rate, and ρ must be > 0).

@@ -540,7 +540,10 @@ fn trade_error<I: Integrator<Group = Se3>>(m: &I, reference: &(Se3, Vector6<f64>
     };
     let (a, b) = (entries(m.configuration().unwrap()), entries(&reference.0));
     let g_scale = b.iter().fold(1.0f64, |s, x| s.max(x.abs()));
-    let dg = a.iter().zip(&b).fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
+    let dg = a
+        .iter()
+        .zip(&b)
+        .fold(0.0f64, |s, (x, y)| s.max((x - y).abs()));
     ((m.momentum() - reference.1).amax() / reference.1.amax()).max(dg / g_scale)
 }
 
