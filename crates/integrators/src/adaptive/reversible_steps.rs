@@ -42,8 +42,8 @@
 //!
 //! **The density.** [`System::step_density`] gives ρ (the provided form from the body's velocity
 //! |∂h/∂μ| and the potential's frequency; a model overrides it, e.g. √(|Ω|² + GM/r³) for a
-//! satellite on an orbit, and √(|Π × Ω|²/|Π|² + GM/r³) for a method that follows the spin about
-//! Π exactly), of the scope the method declares ([`SymmetricMethod::density_scope`],
+//! satellite on an orbit, and √(½‖Π̂𝕀⁻¹ − Ω̂‖² + GM/r³), the body's nutation frequency and
+//! the orbit's, for a method that follows the spin about Π exactly), of the scope the method declares ([`SymmetricMethod::density_scope`],
 //! [`crate::DensityScope`]) and [`System::step_density_rate`] gives G (the provided form by central
 //! differences of ρ along the flow; a model gives the closed form). Any system can be the
 //! monitor, so a user chooses the density by wrapping the model. ε is the accuracy knob: ε/ρ is
