@@ -42,7 +42,8 @@ use pulp::Simd;
 /// values frozen by a select while its neighbours iterate on). What differs is only the
 /// elementary functions — the lanes' sin/cos (within 1 ulp of libm) and atan (fdlibm's, within
 /// 1 ulp of libm) where the scalar takes libm's — so a lane is the scalar `ExactFreeBody` to a
-/// few ulps of |Π| (test `exact_lanes_follow_the_scalar_exact_flow`: the measured bound there).
+/// few ulps: measured within 1.6 ulps of |Π| for Π and 6.8 ulps for R, four bodies in five bit for
+/// bit, in every regime of the scalar tests (test `exact_lanes_follow_the_scalar_exact_flow`).
 ///
 /// **The scalar path per body.** A body whose orbit is not of the generic elliptic kind is
 /// evaluated, lane by lane, by the scalar `FreeBodyFlow::advance` from its initial state at its

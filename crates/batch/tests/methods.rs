@@ -433,9 +433,10 @@ fn exact_gap(
     (worst, same)
 }
 
-/// The batched exact flow follows the scalar `ExactFreeBody` to a few ulps: Π in ulps of |Π|, R
-/// in ulps of 1, within 8 ulps plus twice the problem's own spread (the scalar runs from Π₀ and
-/// from Π₀(1 + ε)), in every regime of `common::MOMENTS` (generic, nearly symmetric, symmetric
+/// The batched exact flow follows the scalar `ExactFreeBody` to a few ulps: Π within 3 ulps of
+/// |Π|, R within 8 ulps of 1 (measured 1.62 and 6.75; the scalar run from Π₀(1 + ε) is 1.2 to
+/// 10¹⁴ ulps away from the one from Π₀, the problem's own spread, printed with the gaps), and
+/// about four bodies in five bit for bit, in every regime of `common::MOMENTS` (generic, nearly symmetric, symmetric
 /// either side — the scalar path, bit for bit —, flat, widely spread), |Π| from 1e-150 to 1e150,
 /// near the separatrix (10⁻⁴, 10⁻¹⁰ and 10⁻¹⁵ relative), and long times (steps of 10⁴ and of 10⁹
 /// — precession angles beyond the lanes' 2²⁸ rad, the scalar path for those steps — to t|Π|/I
@@ -444,13 +445,11 @@ fn exact_gap(
 fn exact_lanes_follow_the_scalar_exact_flow() {
     let level = Level::detect();
     let mut worst = [0.0f64; 2];
-    let mut worst_bound = 0.0f64;
     let (mut same, mut total) = (0, 0);
     let mut check = |what: String, (g, n): ([f64; 4], usize), count: usize| {
-        println!("{what}: {g:?}, {n}/{count} bit for bit");
+        println!("{what}: {g:?} (Π, R; the spread's Π, R), {n}/{count} bit for bit");
         worst[0] = worst[0].max(g[0]);
         worst[1] = worst[1].max(g[1]);
-        worst_bound = worst_bound.max((g[0] - 2.0 * g[2]).max(g[1] - 2.0 * g[3]));
         same += n;
         total += count;
     };
@@ -479,18 +478,19 @@ fn exact_lanes_follow_the_scalar_exact_flow() {
         }
     }
     println!(
-        "exact flow: worst Π {:.2} ulps of |Π|, R {:.2} ulps; worst excess over twice the spread {worst_bound:.2}; {same}/{total} bit for bit",
+        "exact flow: worst Π {:.2} ulps of |Π|, R {:.2} ulps; {same}/{total} bit for bit",
         worst[0], worst[1]
     );
-    assert!(worst_bound <= 8.0, "{worst:?} {worst_bound}");
+    assert!(worst[0] <= 3.0 && worst[1] <= 8.0, "{worst:?}");
 }
 
 /// Over 10⁶ steps of h = 0.01 of eight bodies (|Π| = 1, random attitudes, body 1 of
 /// `common::MOMENTS`) the batched exact flow keeps |Π|², the energy (monitored at every step) and
-/// the spatial momentum RΠ (checked every 10⁵ steps) at round-off, as the scalar `ExactFreeBody`
-/// keeps them (within 9e-16 relative): every value comes from the orbit's constants, evaluated
-/// at the compensated elapsed time, so nothing accumulates; and after 10⁶ steps the lanes are
-/// the scalar integrator to a few ulps.
+/// the spatial momentum RΠ (checked every 10⁵ steps) at round-off — measured 8.9e-16, 1.1e-15
+/// and 5.6e-16 relative, bound 1.5e-15; the scalar `ExactFreeBody` keeps them within 9e-16 —:
+/// every value comes from the orbit's constants, evaluated at the compensated elapsed time, so
+/// nothing accumulates; and after 10⁶ steps the lanes are the scalar integrator to an ulp
+/// (measured 0.5 and 0.25; bound 4).
 #[test]
 fn exact_lanes_keep_the_invariants_over_a_million_steps() {
     let k = 1;
@@ -527,6 +527,6 @@ fn exact_lanes_keep_the_invariants_over_a_million_steps() {
     println!(
         "10⁶ exact steps: |Π|² {d_casimir:e}, energy {d_energy:e}, RΠ {d_spatial:e} relative; against the scalar: {gap:?} ulps"
     );
-    assert!(d_casimir < 2e-15 && d_energy < 2e-15 && d_spatial < 2e-15);
-    assert!(gap[0] <= 16.0 && gap[1] <= 16.0, "{gap:?}");
+    assert!(d_casimir < 1.5e-15 && d_energy < 1.5e-15 && d_spatial < 1.5e-15);
+    assert!(gap[0] <= 4.0 && gap[1] <= 4.0, "{gap:?}");
 }
