@@ -530,3 +530,30 @@ fn exact_lanes_keep_the_invariants_over_a_million_steps() {
     assert!(d_casimir < 1.5e-15 && d_energy < 1.5e-15 && d_spatial < 1.5e-15);
     assert!(gap[0] <= 4.0 && gap[1] <= 4.0, "{gap:?}");
 }
+
+/// At the phase limit: a step that takes |t|·|Π|/I_min to 2⁵² rad or beyond fails the body (its
+/// last state kept), as the scalar `ExactFreeBody`'s first step fails there; just below it the
+/// body runs and is the scalar's bits (a precession angle far beyond 2²⁸ rad: the scalar path).
+#[test]
+fn exact_lanes_fail_at_the_phase_limit_as_the_scalar_step() {
+    let k = 0; // I_min = 1, |Π| = 1: the phase is t
+    let (pis, rs): (Vec<_>, Vec<_>) = (0..N as u64).map(|i| state(1.0, 51, i)).unzip();
+    let model = BodyModel::free(&bodies()[k]).unwrap();
+    for level in Level::available() {
+        let mut b = Batch::new(ExactFlow::new(model.clone()).unwrap(), &pis, &rs, level).unwrap();
+        b.step(4.4e15).unwrap();
+        for i in 0..N {
+            assert_eq!(b.status(i).unwrap(), batch::LaneStatus::Running, "{level} {i}");
+            let (pi, r) = scalar_exact(k, pis[i], rs[i], 4.4e15, 1).unwrap();
+            let (bpi, br) = b.state(i).unwrap();
+            assert_eq!((bpi, *br.as_matrix()), (pi, *r.as_matrix()), "{level} {i}");
+        }
+        let mut b = Batch::new(ExactFlow::new(model.clone()).unwrap(), &pis, &rs, level).unwrap();
+        b.step(4.6e15).unwrap();
+        for i in 0..N {
+            assert!(scalar_exact(k, pis[i], rs[i], 4.6e15, 1).is_none());
+            assert_eq!(b.status(i).unwrap(), batch::LaneStatus::Failed { step: 0 });
+            assert_eq!(b.momentum(i).unwrap(), pis[i]);
+        }
+    }
+}

@@ -213,9 +213,10 @@ fn atan_arguments() -> Vec<f64> {
     xs
 }
 
-/// The lanes' atan is within 1 ulp of libm's (glibc's, correctly rounded in practice) over the
-/// whole range, keeps ±0 and the sign, gives ±π/2 at ±∞ and NaN for NaN; and every level gives
-/// the scalar lane's bits.
+/// The lanes' atan is fdlibm's bit for bit (the `libm` crate's) and within 1 ulp of the system
+/// libm's (glibc's, correctly rounded in practice; measured: 97 % of the arguments equal) over
+/// the whole range, keeps ±0 and the sign, gives ±π/2 at ±∞ and NaN for NaN; and every level
+/// gives the scalar lane's bits.
 #[test]
 fn atan_matches_libm_over_the_whole_range() {
     let xs = atan_arguments();
@@ -227,6 +228,8 @@ fn atan_matches_libm_over_the_whole_range() {
         let u = ulps(a, x.atan());
         worst = worst.max(u);
         exact += (u == 0) as usize;
+        // fdlibm's operations, lane by lane: the `libm` crate's atan (its Rust port) bit for bit
+        assert_eq!(a.to_bits(), libm::atan(x).to_bits(), "atan({x:e}) against fdlibm");
     }
     println!(
         "atan: worst {worst} ulp against libm; {exact} of {} equal",
