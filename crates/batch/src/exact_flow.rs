@@ -257,11 +257,7 @@ fn rc_one<S: Simd>(e: F<S>, mask: M<S>) -> (F<S>, M<S>) {
 /// iteration where the scalar loop stops for it (NaN after 64, as the scalar). Also the lanes
 /// that need the scalar path (`rc_one`).
 #[inline(always)]
-fn carlson<S: Simd>(
-    xyzp: [F<S>; 4],
-    need_f: M<S>,
-    need_j: M<S>,
-) -> (F<S>, F<S>, M<S>) {
+fn carlson<S: Simd>(xyzp: [F<S>; 4], need_f: M<S>, need_j: M<S>) -> (F<S>, F<S>, M<S>) {
     let [mut x, mut y, mut z, mut p] = xyzp;
     let s = x.s;
     let delta = ((p - x) * (p - y)) * (p - z);
@@ -341,8 +337,7 @@ fn mul3<S: Simd>(a: &[F<S>; 9], b: &[F<S>; 9]) -> [F<S>; 9] {
     let mut o = *a;
     for i in 0..3 {
         for j in 0..3 {
-            o[3 * i + j] =
-                (a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j]) + a[3 * i + 2] * b[6 + j];
+            o[3 * i + j] = (a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j]) + a[3 * i + 2] * b[6 + j];
         }
     }
     o
@@ -352,7 +347,11 @@ impl ExactFlow {
     /// The elliptic evaluation at the lanes' elapsed time t: (Π, R) and the lanes that need the
     /// scalar path for this step (`FreeBodyFlow::evaluate`'s elliptic branch, line by line).
     #[inline(always)]
-    fn elliptic<S: Simd>(&self, st: &ExactFlowState<S>, lanes: M<S>) -> ([F<S>; 3], [F<S>; 9], M<S>) {
+    fn elliptic<S: Simd>(
+        &self,
+        st: &ExactFlowState<S>,
+        lanes: M<S>,
+    ) -> ([F<S>; 3], [F<S>; 9], M<S>) {
         let c = &st.c;
         let t = st.t;
         let s = t.s;
@@ -407,7 +406,8 @@ impl ExactFlow {
         let p = &c[at::PMAT..at::PMAT + 9];
         let mut pi = [zero; 3];
         for i in 0..3 {
-            pi[i] = ((p[3 * i] * qt[0] + p[3 * i + 1] * qt[1]) + p[3 * i + 2] * qt[2]) * c[at::SCALE];
+            pi[i] =
+                ((p[3 * i] * qt[0] + p[3 * i + 1] * qt[1]) + p[3 * i + 2] * qt[2]) * c[at::SCALE];
         }
         // ΔΛ (`Modulus::third_kind_part`, the slope form for β < 1) and ΔG.
         let slope = c[at::SLOPE].eq(one);
@@ -453,8 +453,8 @@ impl ExactFlow {
         let mut g = [zero; 9];
         for i in 0..3 {
             for j in 0..3 {
-                g[3 * i + j] =
-                    (rot[3 * i] * bt[3 * j] + rot[3 * i + 1] * bt[3 * j + 1]) + rot[3 * i + 2] * bt[3 * j + 2];
+                g[3 * i + j] = (rot[3 * i] * bt[3 * j] + rot[3 * i + 1] * bt[3 * j + 1])
+                    + rot[3 * i + 2] * bt[3 * j + 2];
             }
         }
         normalize(&mut g);
@@ -526,7 +526,13 @@ impl ExactFlow {
             let got = match self.flow.advance(st.t.lanes()[l], &pi0, Some(&r0)) {
                 Ok((pi, Some(r))) => {
                     let m = r.as_matrix();
-                    core::array::from_fn(|i| if i < 3 { pi[i] } else { m[((i - 3) / 3, (i - 3) % 3)] })
+                    core::array::from_fn(|i| {
+                        if i < 3 {
+                            pi[i]
+                        } else {
+                            m[((i - 3) / 3, (i - 3) % 3)]
+                        }
+                    })
                 }
                 _ => [f64::NAN; 12],
             };
@@ -570,7 +576,11 @@ impl Kernel for ExactFlow {
         };
         let descended = orbit.as_ref().and_then(|o| descent(o.kc2).map(|d| (o, d)));
         let Some((o, (em, en, agm_c, l))) = descended else {
-            v[at::MODE] = if !self.axisymmetric && pi == [0.0; 3] { REST } else { SCALAR };
+            v[at::MODE] = if !self.axisymmetric && pi == [0.0; 3] {
+                REST
+            } else {
+                SCALAR
+            };
             return Some(v);
         };
         let EllipticOrbit {
@@ -735,7 +745,7 @@ impl Kernel for ExactFlow {
     }
     fn build_error(&self) -> IntegratorError {
         IntegratorError::NonFinite {
-            what: "momentum Π",
+            what: "momentum Π"
         }
     }
     fn step_error(&self) -> IntegratorError {

@@ -285,10 +285,7 @@ pub(crate) fn atan<S: Simd>(x: F<S>) -> F<S> {
     // or |x|/1 = |x| exactly.
     let num = i3.select(
         k(s, -1.0),
-        i2.select(
-            ax - 1.5,
-            i1.select(ax - 1.0, i0.select(ax * 2.0 - 1.0, ax)),
-        ),
+        i2.select(ax - 1.5, i1.select(ax - 1.0, i0.select(ax * 2.0 - 1.0, ax))),
     );
     let den = i3.select(
         ax,
@@ -304,9 +301,12 @@ pub(crate) fn atan<S: Simd>(x: F<S>) -> F<S> {
     );
     let z = r * r;
     let w = z * z;
-    let s1 = z * (k(s, AT[0])
-        + w * (k(s, AT[2]) + w * (k(s, AT[4]) + w * (k(s, AT[6]) + w * (k(s, AT[8]) + w * AT[10])))));
-    let s2 = w * (k(s, AT[1]) + w * (k(s, AT[3]) + w * (k(s, AT[5]) + w * (k(s, AT[7]) + w * AT[9]))));
+    let s1 = z
+        * (k(s, AT[0])
+            + w * (k(s, AT[2])
+                + w * (k(s, AT[4]) + w * (k(s, AT[6]) + w * (k(s, AT[8]) + w * AT[10])))));
+    let s2 =
+        w * (k(s, AT[1]) + w * (k(s, AT[3]) + w * (k(s, AT[5]) + w * (k(s, AT[7]) + w * AT[9]))));
     let sum = s1 + s2;
     let reduced = hi - ((r * sum - lo) - r);
     let direct = r - r * sum;

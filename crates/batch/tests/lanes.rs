@@ -139,13 +139,20 @@ fn exact_bodies_of_every_kind_have_the_same_bits_everywhere() {
     let mut b = Batch::new(exact(&body), &pis, &rs, Level::detect()).unwrap();
     b.run(H, STEPS).unwrap();
     for i in (0..1000).filter(|i| (1..=4).contains(&(i % 9))) {
-        let mut s = mechanics::exact::ExactFreeBody::new(body.clone(), pis[i], Some(rs[i])).unwrap();
+        let mut s =
+            mechanics::exact::ExactFreeBody::new(body.clone(), pis[i], Some(rs[i])).unwrap();
         for _ in 0..STEPS {
             integrators::Integrator::step(&mut s, H).unwrap();
         }
         let (pi, r) = b.state(i).unwrap();
         assert_eq!(pi, integrators::Integrator::momentum(&s), "body {i}");
-        assert_eq!(r.as_matrix(), integrators::Integrator::configuration(&s).unwrap().as_matrix(), "body {i}");
+        assert_eq!(
+            r.as_matrix(),
+            integrators::Integrator::configuration(&s)
+                .unwrap()
+                .as_matrix(),
+            "body {i}"
+        );
     }
 }
 

@@ -461,7 +461,11 @@ fn exact_lanes_follow_the_scalar_exact_flow() {
             let pis: Vec<_> = states.iter().map(|s| s.0).collect();
             let rs: Vec<_> = states.iter().map(|s| s.1).collect();
             let h = 0.02 / radius;
-            check(format!("body {k} |Π| {radius:e}"), exact_gap(level, k, &pis, &rs, h, 100), N);
+            check(
+                format!("body {k} |Π| {radius:e}"),
+                exact_gap(level, k, &pis, &rs, h, 100),
+                N,
+            );
         }
         let rs: Vec<_> = (0..N as u64).map(|i| state(1.0, 3, i).1).collect();
         if ![2, 3].contains(&k) {
@@ -469,12 +473,20 @@ fn exact_lanes_follow_the_scalar_exact_flow() {
                 let sep: Vec<_> = (0..N as u64)
                     .map(|i| near_separatrix(&bodies()[k], gap, k as u64, i))
                     .collect();
-                check(format!("body {k} separatrix {gap:e}"), exact_gap(level, k, &sep, &rs, 0.05, 100), N);
+                check(
+                    format!("body {k} separatrix {gap:e}"),
+                    exact_gap(level, k, &sep, &rs, 0.05, 100),
+                    N,
+                );
             }
         }
         let pis: Vec<_> = (0..N as u64).map(|i| state(1.0, 41, i).0).collect();
         for (h, steps) in [(1e4, 20), (1e9, 5), (1e13, 3)] {
-            check(format!("body {k} steps of {h:e}"), exact_gap(level, k, &pis, &rs, h, steps), N);
+            check(
+                format!("body {k} steps of {h:e}"),
+                exact_gap(level, k, &pis, &rs, h, steps),
+                N,
+            );
         }
     }
     println!(
@@ -543,7 +555,11 @@ fn exact_lanes_fail_at_the_phase_limit_as_the_scalar_step() {
         let mut b = Batch::new(ExactFlow::new(model.clone()).unwrap(), &pis, &rs, level).unwrap();
         b.step(4.4e15).unwrap();
         for i in 0..N {
-            assert_eq!(b.status(i).unwrap(), batch::LaneStatus::Running, "{level} {i}");
+            assert_eq!(
+                b.status(i).unwrap(),
+                batch::LaneStatus::Running,
+                "{level} {i}"
+            );
             let (pi, r) = scalar_exact(k, pis[i], rs[i], 4.4e15, 1).unwrap();
             let (bpi, br) = b.state(i).unwrap();
             assert_eq!((bpi, *br.as_matrix()), (pi, *r.as_matrix()), "{level} {i}");
@@ -554,6 +570,25 @@ fn exact_lanes_fail_at_the_phase_limit_as_the_scalar_step() {
             assert!(scalar_exact(k, pis[i], rs[i], 4.6e15, 1).is_none());
             assert_eq!(b.status(i).unwrap(), batch::LaneStatus::Failed { step: 0 });
             assert_eq!(b.momentum(i).unwrap(), pis[i]);
+        }
+        // a flat body (I_min = 10⁻⁸): the phase limit comes at t ≈ 4.5·10⁷, where the precession
+        // angle is still within the lanes' sine range
+        let flat = mechanics::RigidBody::principal([1e-8, 1.0, 2.0]).unwrap();
+        let kernel = ExactFlow::new(BodyModel::free(&flat).unwrap()).unwrap();
+        for (h, runs) in [(4.4e7, true), (4.6e7, false)] {
+            let mut b = Batch::new(kernel.clone(), &pis, &rs, level).unwrap();
+            b.step(h).unwrap();
+            for i in 0..N {
+                let mut s = mechanics::exact::ExactFreeBody::new(flat.clone(), pis[i], Some(rs[i]))
+                    .unwrap();
+                assert_eq!(s.step(h).is_ok(), runs, "{level} h {h:e} body {i}");
+                let want = if runs {
+                    batch::LaneStatus::Running
+                } else {
+                    batch::LaneStatus::Failed { step: 0 }
+                };
+                assert_eq!(b.status(i).unwrap(), want, "{level} h {h:e} body {i}");
+            }
         }
     }
 }

@@ -192,7 +192,14 @@ fn atan_arguments() -> Vec<f64> {
         xs.push(x);
         xs.push(-x);
     }
-    for c in [0.4375, 0.6875, 1.1875, 2.4375, 2f64.powi(-27), 2f64.powi(66)] {
+    for c in [
+        0.4375,
+        0.6875,
+        1.1875,
+        2.4375,
+        2f64.powi(-27),
+        2f64.powi(66),
+    ] {
         for d in -4i64..=4 {
             let x = f64::from_bits((c.to_bits() as i64 + d) as u64);
             xs.push(x);
@@ -229,7 +236,11 @@ fn atan_matches_libm_over_the_whole_range() {
         worst = worst.max(u);
         exact += (u == 0) as usize;
         // fdlibm's operations, lane by lane: the `libm` crate's atan (its Rust port) bit for bit
-        assert_eq!(a.to_bits(), libm::atan(x).to_bits(), "atan({x:e}) against fdlibm");
+        assert_eq!(
+            a.to_bits(),
+            libm::atan(x).to_bits(),
+            "atan({x:e}) against fdlibm"
+        );
     }
     println!(
         "atan: worst {worst} ulp against libm; {exact} of {} equal",
@@ -244,7 +255,12 @@ fn atan_matches_libm_over_the_whole_range() {
         let mut other = vec![0.0; xs.len()];
         atan_slices(level, &xs, &mut other).unwrap();
         for i in 0..xs.len() {
-            assert_eq!(other[i].to_bits(), got[i].to_bits(), "{level}: atan({:e})", xs[i]);
+            assert_eq!(
+                other[i].to_bits(),
+                got[i].to_bits(),
+                "{level}: atan({:e})",
+                xs[i]
+            );
         }
         // NaN next to finite lanes: NaN there, the others untouched
         let mut mixed = [0.3, f64::NAN, -2.0, 1e10, 0.5, f64::NAN, 7.0, -0.6];

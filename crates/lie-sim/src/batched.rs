@@ -23,9 +23,7 @@
 use crate::methods::row::Batched;
 use crate::methods::MethodSpec;
 use crate::model::{Missing, Model};
-use batch::{
-    Batch, BatchError, BodyModel, ExactFlow, Kernel, Level, QuaternionRk4, Rkmk4, Strang,
-};
+use batch::{Batch, BatchError, BodyModel, ExactFlow, Kernel, Level, QuaternionRk4, Rkmk4, Strang};
 use integrators::ensemble::{Execution, Summary};
 use lie_groups::{So3, Vector};
 use nalgebra::Vector3;

@@ -220,7 +220,10 @@ fn batched_and_scalar_exact_rows_agree_to_a_few_ulps() {
             "E₀: {rb:?} {rs:?}"
         );
         for r in [rb, rs] {
-            assert!(num(&r[8]) <= 8.0 * f64::EPSILON * e_s, "max |E − E₀|: {r:?}");
+            assert!(
+                num(&r[8]) <= 8.0 * f64::EPSILON * e_s,
+                "max |E − E₀|: {r:?}"
+            );
             assert!(num(&r[9]) < 1e-14, "Casimir: {r:?}");
         }
     }
