@@ -207,8 +207,8 @@ pub enum PlanBatch {
     Rk4(Batch<QuaternionRk4>),
     /// RKMK4.
     Rkmk4(Batch<Rkmk4>),
-    /// The exact free-body flow.
-    Exact(Batch<ExactFlow>),
+    /// The exact free-body flow (boxed: the kernel carries the scalar flow's constants).
+    Exact(Box<Batch<ExactFlow>>),
 }
 
 impl Plan {
@@ -250,12 +250,12 @@ impl Plan {
                 momenta,
                 execution,
             )?),
-            Batched::Exact => PlanBatch::Exact(made(
+            Batched::Exact => PlanBatch::Exact(Box::new(made(
                 self,
                 ExactFlow::new(self.body.clone())?,
                 momenta,
                 execution,
-            )?),
+            )?)),
         })
     }
 
