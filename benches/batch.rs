@@ -7,9 +7,9 @@
 //! - `batch/free_body`: 𝕀 = diag(1, 2, 3), 1024 bodies with |Π| = 1 drawn on the sphere, random
 //!   attitudes, h = 0.01, 16 steps of every body per iteration (each body, or each block of 128
 //!   batched bodies, stepped 16 times in a row, as a sweep steps them): the scalar library's Strang step
-//!   (`Splitting`, with R), `QuaternionRk4` and `Rkmk4`, the hand-written NO_SQUISH and RK4, and
-//!   the batched Strang, RK4 and RKMK4 on each level this CPU runs (`avx512`, `avx2` forced on an
-//!   AVX-512 machine, `scalar`).
+//!   (`Splitting`, with R), `QuaternionRk4`, `Rkmk4` and the exact flow (`ExactFreeBody`), the
+//!   hand-written NO_SQUISH and RK4, and the batched Strang, RK4, RKMK4 and exact flow on each
+//!   level this CPU runs (`avx512`, `avx2` forced on an AVX-512 machine, `scalar`).
 //! - `batch/field`: the same bodies as heavy tops (m g χ = (0.15, −0.3, 0.75)): scalar Strang,
 //!   RK4 and RKMK4, hand-written RK4, batched Strang, RK4 and RKMK4 per level.
 //! - `batch/size`: the batched Strang step (widest level) for N = 64 … 4·10⁶ bodies, one step of
@@ -22,13 +22,16 @@
 //! `cargo bench -p lie-integrators --bench batch -- --warm-up-time 1 --measurement-time 2`.
 //! The figures and the flop-and-sincos bound are in docs/benchmarks.md.
 
-use batch::{Batch, BodyModel, Level, QuaternionRk4 as BatchRk4, Rkmk4 as BatchRkmk4, Strang};
+use batch::{
+    Batch, BodyModel, ExactFlow, Level, QuaternionRk4 as BatchRk4, Rkmk4 as BatchRkmk4, Strang,
+};
 use criterion::measurement::WallTime;
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion, Throughput};
 use integrators::ensemble::sphere_point;
 use integrators::splitting::Splitting;
 use integrators::{Integrator, QuaternionRk4, Rkmk4};
 use lie_groups::{LieGroup, So3};
+use mechanics::exact::ExactFreeBody;
 use mechanics::{HeavyTop, RigidBody};
 use nalgebra::{UnitQuaternion, Vector3};
 use std::hint::black_box;
@@ -140,6 +143,10 @@ fn free_body(c: &mut Criterion) {
         .map(|i| Rkmk4::new(body.clone(), pis[i], Some(rs[i])).expect("rkmk4"))
         .collect();
     scalar_steps(&mut g, "scalar/rkmk4", rkmk4);
+    let exact: Vec<_> = (0..N)
+        .map(|i| ExactFreeBody::new(body.clone(), pis[i], Some(rs[i])).expect("exact"))
+        .collect();
+    scalar_steps(&mut g, "scalar/exact", exact);
     let quat = |r: &So3| UnitQuaternion::from(*r).into_inner();
     let mut rotors: Vec<NoSquish> = (0..N)
         .map(|i| {
@@ -162,7 +169,20 @@ fn free_body(c: &mut Criterion) {
         &rs,
     );
     batch_steps(&mut g, "batch/rk4", BatchRk4::new(model.clone()), &pis, &rs);
-    batch_steps(&mut g, "batch/rkmk4", BatchRkmk4::new(model), &pis, &rs);
+    batch_steps(
+        &mut g,
+        "batch/rkmk4",
+        BatchRkmk4::new(model.clone()),
+        &pis,
+        &rs,
+    );
+    batch_steps(
+        &mut g,
+        "batch/exact",
+        ExactFlow::new(model).expect("exact"),
+        &pis,
+        &rs,
+    );
     g.finish();
 }
 

@@ -1601,7 +1601,7 @@ pub fn all() -> Vec<Generator> {
         },
         Generator {
             name: "bench-batch",
-            about: "one step of 1024 bodies, scalar against batched (Strang, RK4, RKMK4; per instruction set) and the hand-written NO_SQUISH and RK4",
+            about: "one step of 1024 bodies, scalar against batched (Strang, RK4, RKMK4, the exact flow; per instruction set) and the hand-written NO_SQUISH and RK4",
             takes: "2 min",
             how: How::Bench(Bench {
                 bench: "batch",
@@ -1636,6 +1636,12 @@ pub fn all() -> Vec<Generator> {
                                 what: "batched RKMK4, AVX-512 (target ≥ 4×)",
                                 id: "batch/free_body/batch/rkmk4/avx512",
                                 against: "batch/free_body/scalar/rkmk4",
+                                bound: Some(0.25),
+                            },
+                            Ratio {
+                                what: "batched exact flow, AVX-512 (target ≥ 4×)",
+                                id: "batch/free_body/batch/exact/avx512",
+                                against: "batch/free_body/scalar/exact",
                                 bound: Some(0.25),
                             },
                             Ratio {

@@ -124,6 +124,17 @@ impl<S: Simd> F<S> {
             m: self.s.equal_f64s(self.v, b.v),
         }
     }
+    /// |self| with the sign of `sign` (bit operations: exact, NaN kept).
+    #[inline(always)]
+    pub fn copysign(self, sign: Self) -> Self {
+        let s = self.s;
+        let magnitude = s.and_u64s(s.transmute_u64s_f64s(self.v), s.splat_u64s(!(1 << 63)));
+        let sign = s.and_u64s(s.transmute_u64s_f64s(sign.v), s.splat_u64s(1 << 63));
+        Self {
+            s,
+            v: s.transmute_f64s_u64s(s.or_u64s(magnitude, sign)),
+        }
+    }
     /// Lanes whose bits, as an unsigned integer, have `bits & mask == 0`.
     #[inline(always)]
     pub fn bits_clear(self, mask: u64) -> M<S> {
@@ -156,6 +167,14 @@ impl<S: Simd> M<S> {
         Self {
             s: self.s,
             m: self.s.and_m64s(self.m, b.m),
+        }
+    }
+    /// Lane-wise or.
+    #[inline(always)]
+    pub fn or(self, b: Self) -> Self {
+        Self {
+            s: self.s,
+            m: self.s.or_m64s(self.m, b.m),
         }
     }
     /// Lane-wise negation.

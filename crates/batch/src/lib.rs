@@ -10,7 +10,10 @@
 //!   within `4 (1 + θ)` ulps of the scalar step (θ the step's largest rotation angle);
 //! - [`QuaternionRk4`]: RK4 on (q, Π) as `integrators::QuaternionRk4`, bit for bit;
 //! - [`Rkmk4`]: Runge–Kutta–Munthe-Kaas of order 4 on SO(3) × so(3)* as `integrators::Rkmk4`,
-//!   bit for bit wherever a step's rotations stay below π/2.
+//!   bit for bit wherever a step's rotations stay below π/2;
+//! - [`ExactFlow`]: the exact free-body flow as `mechanics::exact::ExactFreeBody` (Jacobi's
+//!   elliptic functions and Legendre's third integral on the lanes), to a few ulps; the orbits
+//!   that are not of the generic elliptic kind take the scalar flow, body by body.
 //!
 //! One vector operation advances 8 bodies on AVX-512, 4 on AVX2, 1 otherwise ([`Level`],
 //! detected at run time through `pulp`, or forced). The sines and cosines of the rotations come
@@ -61,6 +64,7 @@
 mod batch;
 mod engine;
 mod error;
+mod exact_flow;
 mod lanes;
 mod level;
 mod model;
@@ -72,6 +76,7 @@ pub mod trig;
 pub use batch::{Batch, LaneStatus};
 pub use engine::Kernel;
 pub use error::BatchError;
+pub use exact_flow::{ExactFlow, ExactFlowState};
 pub use level::Level;
 pub use model::BodyModel;
 pub use rk4::{QuaternionRk4, Rk4State};
@@ -88,6 +93,8 @@ pub type StrangBatch = Batch<Strang>;
 pub type Rk4Batch = Batch<QuaternionRk4>;
 /// A batch stepped by RKMK4.
 pub type Rkmk4Batch = Batch<Rkmk4>;
+/// A batch stepped by the exact flow.
+pub type ExactBatch = Batch<ExactFlow>;
 
 /// The README's example (the crate's page on crates.io), compiled and run as a doctest.
 #[cfg(doctest)]

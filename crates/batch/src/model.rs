@@ -20,6 +20,8 @@ use mechanics::{HeavyTop, RigidBody};
 /// [`RigidBody::principal_frame`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyModel {
+    /// Iᵢ, as the body keeps them (the exact flow rebuilds the body from them).
+    pub(crate) moments: [f64; 3],
     /// 1/Iᵢ.
     pub(crate) inv_moments: [f64; 3],
     /// The splitting's axes `[r, p, s]` ([`RigidBody::split_axes`]).
@@ -45,6 +47,7 @@ impl BodyModel {
         let inv = [1.0 / moments[0], 1.0 / moments[1], 1.0 / moments[2]];
         let [r, p, s] = body.split_axes();
         Ok(Self {
+            moments: [moments[0], moments[1], moments[2]],
             inv_moments: inv,
             split_axes: [r, p, s],
             split_rates: [inv[r], inv[p] - inv[r], inv[s] - inv[r]],
@@ -59,6 +62,10 @@ impl BodyModel {
         // `HeavyTop` keeps χ·(m g) the same way.
         model.field = Some([chi[0] * mg, chi[1] * mg, chi[2] * mg]);
         Ok(model)
+    }
+    /// The principal moments Iᵢ.
+    pub fn moments(&self) -> [f64; 3] {
+        self.moments
     }
     /// The principal moments' inverses 1/Iᵢ.
     pub fn inverse_moments(&self) -> [f64; 3] {

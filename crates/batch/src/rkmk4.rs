@@ -211,7 +211,7 @@ fn dot<S: Simd>(u: [F<S>; 3], v: [F<S>; 3]) -> F<S> {
 
 /// `So3::normalize`: one Newton–Schulz step `R ← R (3I − RᵀR)/2`, operation for operation.
 #[inline(always)]
-fn normalize<S: Simd>(r: &mut [F<S>; 9]) {
+pub(crate) fn normalize<S: Simd>(r: &mut [F<S>; 9]) {
     let s = r[0].s;
     let (c0, c1, c2) = ([r[0], r[3], r[6]], [r[1], r[4], r[7]], [r[2], r[5], r[8]]);
     let (d01, d02, d12) = (dot(c0, c1) * -0.5, dot(c0, c2) * -0.5, dot(c1, c2) * -0.5);

@@ -5,9 +5,10 @@
 mod common;
 
 use batch::{
-    Batch, BatchError, BodyModel, Kernel, LaneStatus, Level, QuaternionRk4, Rkmk4, Strang,
+    Batch, BatchError, BodyModel, ExactFlow, Kernel, LaneStatus, Level, QuaternionRk4, Rkmk4,
+    Strang,
 };
-use common::{bodies, state, tops};
+use common::{bodies, near_separatrix, state, tops};
 use integrators::ensemble::{Execution, Status};
 use integrators::CompositionScheme;
 use lie_groups::{LieGroup, So3};
@@ -51,6 +52,10 @@ fn rot<T: Clone>(v: &[T]) -> Vec<T> {
 fn same_bits_everywhere<K: Kernel>(kernel: K, what: &str) {
     let n = 1000;
     let states: Vec<_> = (0..n as u64).map(|i| state(1.5, 5, i)).collect();
+    same_bits_for(kernel, what, states);
+}
+
+fn same_bits_for<K: Kernel>(kernel: K, what: &str, states: Vec<(Vector3<f64>, So3)>) {
     let pis: Vec<_> = states.iter().map(|s| s.0).collect();
     let rs: Vec<_> = states.iter().map(|s| s.1).collect();
     let reference = run(&kernel, &pis, &rs, Level::Scalar, Execution::Sequential);
@@ -95,8 +100,60 @@ fn a_body_has_the_same_bits_in_every_lane_size_level_and_thread_count() {
     same_bits_everywhere(Strang::new(field.clone()), "Strang field");
     same_bits_everywhere(QuaternionRk4::new(free.clone()), "RK4 free");
     same_bits_everywhere(QuaternionRk4::new(field.clone()), "RK4 field");
-    same_bits_everywhere(Rkmk4::new(free), "RKMK4 free");
+    same_bits_everywhere(Rkmk4::new(free.clone()), "RKMK4 free");
     same_bits_everywhere(Rkmk4::new(field), "RKMK4 field");
+    same_bits_everywhere(ExactFlow::new(free).unwrap(), "exact");
+}
+
+/// The batched exact flow's bodies of every kind side by side — generic orbits (the lanes),
+/// bodies at rest, steady rotations about an axis, states on the separatrix in exact arithmetic
+/// (k' = 0: the scalar path), an ulp off it and near it — keep their bits whatever their lane,
+/// the batch size, the level and the threads; and so do the bodies of an axisymmetric body (all
+/// on the scalar path).
+#[test]
+fn exact_bodies_of_every_kind_have_the_same_bits_everywhere() {
+    // 𝕀 = (1, 3, 6): I₃(I₂ − I₁) = 4 I₁(I₃ − I₂), so Π = (a, b, 2a) is on the separatrix exactly.
+    let body = mechanics::RigidBody::principal([1.0, 3.0, 6.0]).unwrap();
+    let states: Vec<_> = (0..1000u64)
+        .map(|i| {
+            let (pi, r) = state(1.5, 5, i);
+            let pi = match i % 9 {
+                1 => Vector3::zeros(),
+                2 => Vector3::new(0.0, -1.2, 0.0),
+                3 => Vector3::new(0.7, 0.0, 0.0),
+                4 => Vector3::new(pi.x, pi.y, 2.0 * pi.x),
+                5 => Vector3::new(pi.x, pi.y, 2.0 * pi.x * (1.0 + f64::EPSILON)),
+                6 => near_separatrix(&body, 1e-9, 13, i),
+                _ => pi,
+            };
+            (pi, r)
+        })
+        .collect();
+    let exact = |b: &mechanics::RigidBody| ExactFlow::new(BodyModel::free(b).unwrap()).unwrap();
+    same_bits_for(exact(&body), "exact, every kind", states.clone());
+    same_bits_for(exact(&bodies()[2]), "exact, axisymmetric", states.clone());
+    // the bodies at rest, the steady rotations and the states on the separatrix are the scalar
+    // `ExactFreeBody`'s bits (the scalar path, or (Π₀, R₀) kept)
+    let pis: Vec<_> = states.iter().map(|s| s.0).collect();
+    let rs: Vec<_> = states.iter().map(|s| s.1).collect();
+    let mut b = Batch::new(exact(&body), &pis, &rs, Level::detect()).unwrap();
+    b.run(H, STEPS).unwrap();
+    for i in (0..1000).filter(|i| (1..=4).contains(&(i % 9))) {
+        let mut s =
+            mechanics::exact::ExactFreeBody::new(body.clone(), pis[i], Some(rs[i])).unwrap();
+        for _ in 0..STEPS {
+            integrators::Integrator::step(&mut s, H).unwrap();
+        }
+        let (pi, r) = b.state(i).unwrap();
+        assert_eq!(pi, integrators::Integrator::momentum(&s), "body {i}");
+        assert_eq!(
+            r.as_matrix(),
+            integrators::Integrator::configuration(&s)
+                .unwrap()
+                .as_matrix(),
+            "body {i}"
+        );
+    }
 }
 
 fn fails_alone<K: Kernel>(kernel: K, what: &str) {
@@ -106,7 +163,7 @@ fn fails_alone<K: Kernel>(kernel: K, what: &str) {
     let rs: Vec<_> = states.iter().map(|s| s.1).collect();
     let clean = run(&kernel, &pis, &rs, Level::detect(), Execution::Sequential);
     // body 5 starts with a NaN; body 10 overflows in its first step (RK4, RKMK4: Π × Ω), or turns by
-    // more than 2²⁸ rad (Strang)
+    // more than 2²⁸ rad (Strang), or beyond the exact flow's phase limit of 2⁵² rad
     let mut bad = pis.clone();
     bad[5][1] = f64::NAN;
     bad[10] = Vector3::new(3e200, -1e200, 2e200);
@@ -146,8 +203,9 @@ fn a_bad_body_fails_alone() {
     fails_alone(Strang::new(field.clone()), "Strang field");
     fails_alone(QuaternionRk4::new(free.clone()), "RK4 free");
     fails_alone(QuaternionRk4::new(field.clone()), "RK4 field");
-    fails_alone(Rkmk4::new(free), "RKMK4 free");
+    fails_alone(Rkmk4::new(free.clone()), "RKMK4 free");
     fails_alone(Rkmk4::new(field), "RKMK4 field");
+    fails_alone(ExactFlow::new(free).unwrap(), "exact");
 }
 
 /// Zero bodies, arrays of different lengths, an unusable step or a body out of range: a clear

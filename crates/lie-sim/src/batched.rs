@@ -1,5 +1,6 @@
 //! The sweep's batched path: where the scene's method has a batched version (its registry row's
-//! `batch`: the Strang splitting, under a composition too, quaternion RK4 and RKMK4) and the model is a
+//! `batch`: the Strang splitting, under a composition too, quaternion RK4, RKMK4 and the exact
+//! free-body flow) and the model is a
 //! body a batch carries (a rigid body in principal axes, free or in a uniform field, unforced:
 //! `Model::batch_body`), `lie-sim sweep` steps the members N at a time with the `batch` crate —
 //! eight bodies per vector operation on AVX-512, four on AVX2 — instead of one scalar step per
@@ -7,7 +8,9 @@
 //!
 //! **Same rows, to the ulp.** The batched Strang step is within `4 (1 + θ)` ulps of the scalar
 //! step (θ its largest rotation angle), batched RK4 is the scalar step bit for bit, and so is
-//! batched RKMK4 wherever a step rotates a body by at most π/2; each member's
+//! batched RKMK4 wherever a step rotates a body by at most π/2; the batched exact flow is the
+//! scalar `ExactFreeBody` to a few ulps of |Π| (bit for bit on the bodies it hands to the scalar
+//! flow: axisymmetric bodies, steady rotations, the separatrix); each member's
 //! trajectory has the same bits whatever its lane, the chunk, the instruction set, the thread
 //! count and the shard (the `batch` crate's determinism), so the sweep's rows still do not depend
 //! on how it is run. The path is part of the sweep's fingerprint: shards of the batched and the
@@ -20,7 +23,7 @@
 use crate::methods::row::Batched;
 use crate::methods::MethodSpec;
 use crate::model::{Missing, Model};
-use batch::{Batch, BatchError, BodyModel, Kernel, Level, QuaternionRk4, Rkmk4, Strang};
+use batch::{Batch, BatchError, BodyModel, ExactFlow, Kernel, Level, QuaternionRk4, Rkmk4, Strang};
 use integrators::ensemble::{Execution, Summary};
 use lie_groups::{So3, Vector};
 use nalgebra::Vector3;
@@ -60,6 +63,9 @@ impl Plan {
                 )
             }))
         })?;
+        if kind == Batched::Exact {
+            ExactFlow::new(body.clone()).map_err(|e| Missing::because(e.to_string()))?;
+        }
         Ok(Self {
             kind,
             body,
@@ -94,6 +100,7 @@ impl Plan {
             strang,
             rk4,
             rkmk4,
+            exact,
             momenta,
             summaries,
         } = scratch;
@@ -107,21 +114,28 @@ impl Plan {
         match self.kind {
             Batched::Strang => self.batch(
                 strang,
-                || Strang::new(self.body.clone()),
+                || Ok(Strang::new(self.body.clone())),
                 job,
                 (end, steps, monitor_every),
                 execution,
             )?,
             Batched::Rk4 => self.batch(
                 rk4,
-                || QuaternionRk4::new(self.body.clone()),
+                || Ok(QuaternionRk4::new(self.body.clone())),
                 job,
                 (end, steps, monitor_every),
                 execution,
             )?,
             Batched::Rkmk4 => self.batch(
                 rkmk4,
-                || Rkmk4::new(self.body.clone()),
+                || Ok(Rkmk4::new(self.body.clone())),
+                job,
+                (end, steps, monitor_every),
+                execution,
+            )?,
+            Batched::Exact => self.batch(
+                exact,
+                || ExactFlow::new(self.body.clone()),
                 job,
                 (end, steps, monitor_every),
                 execution,
@@ -133,7 +147,7 @@ impl Plan {
     fn batch<K: Kernel>(
         &self,
         slot: &mut Option<Batch<K>>,
-        kernel: impl FnOnce() -> K,
+        kernel: impl FnOnce() -> Result<K, BatchError>,
         Job {
             momenta,
             indices,
@@ -148,7 +162,7 @@ impl Plan {
                 b
             }
             None => {
-                let mut b = Batch::new(kernel(), momenta, &[self.g0], self.level)?
+                let mut b = Batch::new(kernel()?, momenta, &[self.g0], self.level)?
                     .monitor_every(monitor_every as u64);
                 if let Some(c) = &self.composition {
                     b = b.with_composition(c.clone())?;
@@ -177,6 +191,7 @@ pub struct Scratch {
     strang: Option<Batch<Strang>>,
     rk4: Option<Batch<QuaternionRk4>>,
     rkmk4: Option<Batch<Rkmk4>>,
+    exact: Option<Batch<ExactFlow>>,
     momenta: Vec<Vector3<f64>>,
     summaries: Vec<Summary<Vector3<f64>>>,
 }
@@ -192,6 +207,8 @@ pub enum PlanBatch {
     Rk4(Batch<QuaternionRk4>),
     /// RKMK4.
     Rkmk4(Batch<Rkmk4>),
+    /// The exact free-body flow (boxed: the kernel carries the scalar flow's constants).
+    Exact(Box<Batch<ExactFlow>>),
 }
 
 impl Plan {
@@ -233,6 +250,12 @@ impl Plan {
                 momenta,
                 execution,
             )?),
+            Batched::Exact => PlanBatch::Exact(Box::new(made(
+                self,
+                ExactFlow::new(self.body.clone())?,
+                momenta,
+                execution,
+            )?)),
         })
     }
 
@@ -247,6 +270,7 @@ impl Plan {
             PlanBatch::Strang(b) => b.refill(momenta, &[self.g0]),
             PlanBatch::Rk4(b) => b.refill(momenta, &[self.g0]),
             PlanBatch::Rkmk4(b) => b.refill(momenta, &[self.g0]),
+            PlanBatch::Exact(b) => b.refill(momenta, &[self.g0]),
         }
     }
 }
@@ -258,6 +282,7 @@ impl PlanBatch {
             Self::Strang(b) => b.run(h, steps),
             Self::Rk4(b) => b.run(h, steps),
             Self::Rkmk4(b) => b.run(h, steps),
+            Self::Exact(b) => b.run(h, steps),
         }
     }
     /// `steps` ≥ 1 steps of which the last lands on T = `end`: `steps − 1` of h, then one of
@@ -271,6 +296,7 @@ impl PlanBatch {
             Self::Strang(b) => b.time(),
             Self::Rk4(b) => b.time(),
             Self::Rkmk4(b) => b.time(),
+            Self::Exact(b) => b.time(),
         };
         self.run(end - t, 1)
     }
@@ -280,6 +306,7 @@ impl PlanBatch {
             Self::Strang(b) => b.len(),
             Self::Rk4(b) => b.len(),
             Self::Rkmk4(b) => b.len(),
+            Self::Exact(b) => b.len(),
         }
     }
     /// Always false (a batch has at least one body).
@@ -293,6 +320,7 @@ impl PlanBatch {
             Self::Strang(b) => (b.status(i), b.state(i)),
             Self::Rk4(b) => (b.status(i), b.state(i)),
             Self::Rkmk4(b) => (b.status(i), b.state(i)),
+            Self::Exact(b) => (b.status(i), b.state(i)),
         };
         match status {
             Ok(batch::LaneStatus::Running) => state.ok(),

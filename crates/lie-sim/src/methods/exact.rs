@@ -3,7 +3,7 @@
 
 use super::families::{self, Family};
 use super::options::Options;
-use super::row::{Row, Stepping, TauRule, Takes, Trade};
+use super::row::{Batched, Row, Stepping, TauRule, Takes, Trade};
 use super::wrap::BuildError;
 use crate::model::{Alg, FreeBodyVisitor, Missing, Model};
 use crate::plot::Marker;
@@ -38,7 +38,7 @@ pub const ROW: Row = Row {
     family,
     second: false,
     marker: Some(Marker::Diamond),
-    batch: None,
+    batch: Some(Batched::Exact),
     step_limit: None,
 };
 

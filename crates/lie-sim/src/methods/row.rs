@@ -38,6 +38,9 @@ pub enum Batched {
     /// `batch::Rkmk4` (RKMK4 on SO(3) × so(3)*, bit for bit the scalar step wherever a step
     /// rotates a body by at most π/2).
     Rkmk4,
+    /// `batch::ExactFlow` (the exact free-body flow, to a few ulps of the scalar one; the free
+    /// body only).
+    Exact,
 }
 
 /// The options a method takes in `[integrator]`.

@@ -1,5 +1,6 @@
 //! `lie-sim sweep` on the batched path (`crate::batched`): the rows do not depend on the thread
-//! count or the shard, agree with the scalar path to round-off (bit for bit for RK4 and RKMK4), and a sweep
+//! count or the shard, agree with the scalar path to round-off (bit for bit for RK4 and RKMK4, to a
+//! few ulps for the exact flow), and a sweep
 //! that cannot be batched says why and runs scalar.
 
 use crate::common::{lie_sim, scenes_dir, stderr, stdout, temp_dir};
@@ -180,6 +181,54 @@ fn batched_rkmk4_rows_are_the_scalar_rows_bit_for_bit() {
     assert!(out.contains("path         batched ("), "{out}");
     sweep(&dir, "rotors.toml", "rs.csv", 37, "0.5", &["--scalar"]);
     assert_eq!(rows(&dir, "rb.csv"), rows(&dir, "rs.csv"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The exact flow on 37 free rotors (duration 2: 40 steps of 0.05): the batched path (`ExactFlow`,
+/// the lanes' elliptic functions) and the scalar one (`ExactFreeBody`) write the same statuses,
+/// steps and times, momenta within 16 ulps of |Π| (the lanes are the scalar flow to a few ulps:
+/// `batch`'s `exact_lanes_follow_the_scalar_exact_flow`), initial energies within 4 ulps, and
+/// energy and Casimir errors at round-off on both paths (the flow keeps both exactly); the rows
+/// do not depend on the thread count.
+#[test]
+fn batched_and_scalar_exact_rows_agree_to_a_few_ulps() {
+    let dir = temp_dir("batched-exact");
+    let rotors = std::fs::read_to_string(rotors()).unwrap();
+    let exact = rotors.replace("method = \"splitting\"", "method = \"exact\"");
+    std::fs::write(dir.join("exact.toml"), exact).unwrap();
+    let out = sweep(&dir, "exact.toml", "b.csv", 37, "2.0", &["--threads", "1"]);
+    assert!(out.contains("path         batched ("), "{out}");
+    sweep(&dir, "exact.toml", "b2.csv", 37, "2.0", &["--threads", "2"]);
+    assert_eq!(
+        std::fs::read(dir.join("b.csv")).unwrap(),
+        std::fs::read(dir.join("b2.csv")).unwrap()
+    );
+    sweep(&dir, "exact.toml", "s.csv", 37, "2.0", &["--scalar"]);
+    let (b, s) = (rows(&dir, "b.csv"), rows(&dir, "s.csv"));
+    assert_eq!(b.len(), 37);
+    let num = |x: &str| x.parse::<f64>().unwrap();
+    let mut worst = 0.0f64;
+    for (rb, rs) in b.iter().zip(&s) {
+        assert_eq!(rb[..4], rs[..4], "index, status, steps, time");
+        let norm = (4..7).map(|c| num(&rs[c]).powi(2)).sum::<f64>().sqrt();
+        for c in 4..7 {
+            worst = worst.max((num(&rb[c]) - num(&rs[c])).abs() / (f64::EPSILON * norm));
+        }
+        let (e_b, e_s) = (num(&rb[7]), num(&rs[7]));
+        assert!(
+            (e_b - e_s).abs() <= 4.0 * f64::EPSILON * e_s,
+            "E₀: {rb:?} {rs:?}"
+        );
+        for r in [rb, rs] {
+            assert!(
+                num(&r[8]) <= 8.0 * f64::EPSILON * e_s,
+                "max |E − E₀|: {r:?}"
+            );
+            assert!(num(&r[9]) < 1e-14, "Casimir: {r:?}");
+        }
+    }
+    println!("batched exact rows: Π within {worst:.2} ulps of |Π| of the scalar rows");
+    assert!(worst <= 16.0, "{worst} ulps");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

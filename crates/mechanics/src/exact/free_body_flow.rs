@@ -355,6 +355,61 @@ struct Elliptic {
     attitude: Option<Attitude>,
 }
 
+/// The constants of a generic elliptic orbit of the free rigid body with its attitude
+/// ([`FreeBodyFlow::elliptic_orbit`]), in the notation of [`FreeBodyFlow`]: at time t, with
+/// τ = 2ᵉt and u = u₀ + λτ = nK + w,
+///
+/// ```text
+/// Π(t) = 2ᵉ P (A₁ cn u, σA₂ sn u, A₃ dn u),
+/// R(t) = R₀ P B(n₀) exp(Δψ ê₃) B(q(t)/|q|)ᵀ Pᵀ,
+/// Δψ = |q|τ/I₃ + (I₃ − I₁)/(I₁I₃λ) · [|q| ΔΛ − A₃ ΔG],
+/// ```
+///
+/// ΔΛ = c·λτ + Δn·L + B(n, w) − B(n₀, w₀) (c = 1 for β < 1, 0 for β ≥ 1;
+/// [`Modulus::third_kind_part`]) and ΔG = (Δn·π/2 + atan_G(u) − atan_G(u₀))/√(1 + β), each
+/// continued by its quarter periods.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EllipticOrbit {
+    /// |Π|/I_min: the phase limit holds while |t|·rate < 2⁵².
+    pub rate: f64,
+    /// 2ᵉ: Π = 2ᵉ P q, q the scaled canonical momentum.
+    pub scale: f64,
+    /// P: canonical → body frame (a signed permutation, times the principal axes).
+    pub pmat: Matrix3<f64>,
+    /// (A₁, σA₂, A₃) of q.
+    pub amplitudes: [f64; 3],
+    /// λ: u = u₀ + λτ.
+    pub lambda: f64,
+    /// k'² of the modulus (≥ 2⁻¹²⁰).
+    pub kc2: f64,
+    /// k' = √k'².
+    pub kc: f64,
+    /// The quarter period K.
+    pub quarter: f64,
+    /// u₀ = n₀K + w₀.
+    pub phase0: QuarterPhase,
+    /// R₀ P B(n₀).
+    pub start: Matrix3<f64>,
+    /// |q| and 1/|q|.
+    pub norm: f64,
+    /// See [`EllipticOrbit::norm`].
+    pub inv_norm: f64,
+    /// I₃ of the labelling.
+    pub i3: f64,
+    /// (I₃ − I₁)/(I₁I₃λ).
+    pub factor: f64,
+    /// β = I₃(I₂ − I₁)/(I₁(I₃ − I₂)).
+    pub beta: f64,
+    /// √(1 + β).
+    pub sb: f64,
+    /// L = [`Modulus::third_kind_quarter`]`(β)`.
+    pub lambda_quarter: f64,
+    /// B(n₀, w₀) = [`Modulus::third_kind_part`] at the start.
+    pub part0: f64,
+    /// atan_G(u₀): atan(√(1+β) S/C) for even n₀, atan(k'S/(√(1+β) C)) for odd.
+    pub atan0: f64,
+}
+
 #[derive(Debug, Clone)]
 struct Attitude {
     /// R₀ P B(n₀).
@@ -547,6 +602,56 @@ impl FreeBodyFlow {
             phase0,
             attitude,
         })))
+    }
+
+    /// The constants of the orbit through (Π, R) when it is of the generic elliptic kind — not
+    /// at rest, not a steady rotation, the body not axisymmetric, k' ≥ 2⁻⁶⁰ (not within ~10⁻³⁶
+    /// of the separatrix, where the functions are their k = 1 limits) — as [`ExactFreeBody`]
+    /// computes them once and reads them at every step; `Ok(None)` for the other kinds.
+    ///
+    /// For evaluating the same orbit elsewhere (the batched exact flow of the `batch` crate
+    /// evaluates [`FreeBodyFlow::advance`]'s t-dependent part on SIMD lanes from these values);
+    /// every field is the double the scalar evaluation reads. Errors: a non-finite Π.
+    ///
+    /// [`ExactFreeBody`]: crate::exact::ExactFreeBody
+    pub fn elliptic_orbit(
+        &self,
+        pi: &Vector3<f64>,
+        r: &So3,
+    ) -> Result<Option<EllipticOrbit>, IntegratorError> {
+        let orbit = self.orbit(pi, Some(r), true)?;
+        let OrbitKind::Elliptic(ell) = &orbit.kind else {
+            return Ok(None);
+        };
+        let Some(att) = &ell.attitude else {
+            return Ok(None);
+        };
+        if ell.modulus.is_asymptotic() {
+            return Ok(None);
+        }
+        let kc2 = ell.modulus.kc2();
+        Ok(Some(EllipticOrbit {
+            rate: orbit.rate,
+            scale: ell.scale,
+            pmat: ell.pmat,
+            amplitudes: ell.amplitudes.into(),
+            lambda: ell.lambda,
+            kc2,
+            // As `Modulus::new` keeps it.
+            kc: kc2.sqrt(),
+            quarter: ell.modulus.quarter_period(),
+            phase0: ell.phase0,
+            start: att.start,
+            norm: att.norm,
+            inv_norm: att.inv_norm,
+            i3: att.i3,
+            factor: att.factor,
+            beta: att.beta,
+            sb: att.sb,
+            lambda_quarter: att.lambda_quarter,
+            part0: att.part0,
+            atan0: att.atan0,
+        }))
     }
 
     /// The orbit's state at time t from its start.

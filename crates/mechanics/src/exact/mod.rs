@@ -13,5 +13,5 @@ mod free_body_se3_flow;
 
 pub use axisymmetric_flow::AxisymmetricFlow;
 pub use exact_free_body::ExactFreeBody;
-pub use free_body_flow::FreeBodyFlow;
+pub use free_body_flow::{EllipticOrbit, FreeBodyFlow};
 pub use free_body_se3_flow::FreeBodySe3Flow;
