@@ -673,4 +673,65 @@ mod tests {
             "{e}"
         );
     }
+
+    /// The geodesic scene on SO(n) with Lie–Poisson (τ = Cayley, θ = ½, simplified Newton) at
+    /// h = 0.01 for `steps` steps.
+    fn so_n(n: usize, steps: u64) -> crate::scene::Scene {
+        let d = n * (n - 1) / 2;
+        let inertia: Vec<String> = (0..n)
+            .map(|i| format!("{}", 1.0 + 0.1 * i as f64))
+            .collect();
+        let momentum: Vec<String> = (0..d)
+            .map(|i| format!("{}", 0.1 / (1 + i) as f64))
+            .collect();
+        let text = format!(
+            "[system]\nkind = \"geodesic-so-n\"\nn = {n}\ninertia = [{}]\n\
+             [initial]\nmomentum = [{}]\n\
+             [integrator]\nmethod = \"lie-poisson\"\ntau = \"cayley\"\ntheta = 0.5\n\
+             step = 0.01\nduration = {}\n",
+            inertia.join(", "),
+            momentum.join(", "),
+            steps as f64 * 0.01
+        );
+        crate::scene::Scene::parse(&text, "so(n)", "so-n", Default::default()).unwrap()
+    }
+
+    /// `run` on SO(4) and SO(50) counts each step at its measured cost ([`crate::bounds::stage_cost`]'s table):
+    /// beyond the limit it refuses, naming that cost, before it writes anything; within it the
+    /// run goes ahead. With the previous model (no floor for dynamically sized groups, SO(4)'s
+    /// step counted as 1 and SO(50)'s as 6·10⁵ where they cost 229 and ~9·10³) 10⁷ steps on
+    /// SO(4) were accepted and 10⁴ on SO(50) refused: both checks below fail (checked).
+    #[test]
+    fn so_n_runs_beyond_the_limit_are_refused_naming_their_cost_and_within_it_accepted() {
+        let dir = std::env::temp_dir().join(format!("lie-sim-bounds-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for (n, refused, accepted) in [(4usize, 10_000_000u64, 1000u64), (50, 1_000_000, 10_000)] {
+            let big = so_n(n, refused);
+            let cost = big.step_cost(false).unwrap();
+            assert!(cost > 100, "SO({n}): {cost}");
+            let out = dir.join(format!("so{n}.csv"));
+            let e = run_scene(&big, &out, false, false).unwrap_err().to_string();
+            assert!(e.contains(&format!("× {cost} ")), "SO({n}): {e}");
+            assert!(
+                !out.exists(),
+                "SO({n}): a refused run wrote {}",
+                out.display()
+            );
+            // Within the limit: the estimate passes (a run of 10⁴ steps on SO(50) takes tens of
+            // seconds; it is run to the end on a few steps below).
+            let fine = so_n(n, accepted);
+            let estimate = crate::bounds::Estimate {
+                steps: u128::from(accepted),
+                bytes: 0,
+                step_cost: fine.step_cost(false).unwrap(),
+            };
+            assert!(
+                estimate.check("run", false).is_ok(),
+                "SO({n}): {estimate:?}"
+            );
+            let summary = run_scene(&so_n(n, 3), &out, false, false).map(|_| ());
+            assert!(summary.is_ok(), "SO({n}): {summary:?}");
+        }
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }
