@@ -81,7 +81,7 @@ pub fn dynamic_group(kind: crate::systems::SystemKind) -> bool {
 ///   floor F = [`DYNAMIC_FLOOR`] and c = [`DYNAMIC_PER_DIMENSION`] (explicit, implicit), d =
 ///   n(n−1)/2, fitted to instruction counts of Lie–Poisson (Cayley, θ = ½; fixed point and
 ///   simplified Newton alike) and RKMK4 on the generalized rigid body, per step, over that of
-///   Lie–Poisson on the free body (904 instructions):
+///   Lie–Poisson on the free body:
 ///
 ///   | n | LP measured | LP model | RKMK4 measured | RKMK4 model |
 ///   |---|---|---|---|---|
