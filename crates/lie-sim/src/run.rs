@@ -500,7 +500,7 @@ pub fn run_simulation(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::scene::Overrides;
     use crate::sim::mock::Spin;
@@ -675,8 +675,8 @@ mod tests {
     }
 
     /// The geodesic scene on SO(n) with Lie–Poisson (τ = Cayley, θ = ½, simplified Newton) at
-    /// h = 0.01 for `steps` steps.
-    fn so_n(n: usize, steps: u64) -> crate::scene::Scene {
+    /// h = 0.01 for `steps` steps (also the trade's test scene).
+    pub(crate) fn so_n(n: usize, steps: u64) -> crate::scene::Scene {
         let d = n * (n - 1) / 2;
         let inertia: Vec<String> = (0..n)
             .map(|i| format!("{}", 1.0 + 0.1 * i as f64))

@@ -828,23 +828,9 @@ mod tests {
         assert!((fitted_order(&refs, 1e-13).unwrap() - 4.0).abs() < 1e-12);
     }
 
-    /// The geodesic scene on SO(n) with Lie–Poisson (Newton) over T = 10.
+    /// The geodesic scene on SO(n) with Lie–Poisson (simplified Newton) over T = 10.
     fn so_n_scene(n: usize) -> Scene {
-        let d = n * (n - 1) / 2;
-        let inertia: Vec<String> = (0..n)
-            .map(|i| format!("{}", 1.0 + 0.1 * i as f64))
-            .collect();
-        let momentum: Vec<String> = (0..d)
-            .map(|i| format!("{}", 0.1 / (1 + i) as f64))
-            .collect();
-        let text = format!(
-            "[system]\nkind = \"geodesic-so-n\"\nn = {n}\ninertia = [{}]\n\
-             [initial]\nmomentum = [{}]\n\
-             [integrator]\nmethod = \"lie-poisson\"\ntau = \"cayley\"\ntheta = 0.5\nstep = 0.01\nduration = 10.0\n",
-            inertia.join(", "),
-            momentum.join(", ")
-        );
-        Scene::parse(&text, "so(n)", "so-n", Default::default()).unwrap()
+        crate::run::tests::so_n(n, 1000)
     }
 
     /// A trade counts a step at its cost on the group, as `run` does: the same ladder (every
