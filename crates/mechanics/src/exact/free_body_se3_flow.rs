@@ -43,23 +43,35 @@ impl KineticFlow<Se3> for FreeBodySe3Flow {
     ) -> Result<(), IntegratorError> {
         let pi = mu.fixed_rows::<3>(0).into_owned();
         let p = mu.fixed_rows::<3>(3).into_owned();
-        let r0 = g.as_ref().map_or_else(So3::identity, |g| *g.rotation());
-        let (pit, rt) = self.flow.advance(t, &pi, Some(&r0))?;
-        let rt = rt.ok_or(IntegratorError::NonFinite {
+        // The rotation relative to the start, Q = R₀ᵀR(t), from the identity: P(t) = Qᵀ P turns P
+        // by a rotation orthogonal to round-off, where R(t)ᵀ(R₀P) would also scale it by R₀ᵀR₀, the
+        // attitude's accumulated departure from orthogonality, at every call. R(t) = R₀Q is
+        // projected back onto SO(3) so that departure does not accumulate either.
+        let (pit, q) = self.flow.advance(t, &pi, Some(&So3::identity()))?;
+        let q = q.ok_or(IntegratorError::NonFinite {
             what: "attitude R(t) of the exact flow",
         })?;
-        let ps = r0.as_matrix() * p;
-        let pt = rt.as_matrix().tr_mul(&ps);
-        let x = g.as_ref().map(|g| g.translation() + ps * (t / self.mass));
-        if !pt.iter().all(|v| v.is_finite()) || x.is_some_and(|x| !x.iter().all(|v| v.is_finite()))
+        let pt = q.as_matrix().tr_mul(&p);
+        let moved = g.as_ref().map(|g| {
+            let r0 = g.rotation();
+            (
+                r0.compose(&q).normalize(),
+                g.translation() + r0.as_matrix() * p * (t / self.mass),
+            )
+        });
+        let finite = |v: &nalgebra::Vector3<f64>| v.iter().all(|x| x.is_finite());
+        if !finite(&pt)
+            || moved
+                .as_ref()
+                .is_some_and(|(r, x)| !r.is_finite() || !finite(x))
         {
             return Err(IntegratorError::NonFinite {
                 what: "linear momentum or position of the exact flow",
             });
         }
         *mu = Vector6::new(pit.x, pit.y, pit.z, pt.x, pt.y, pt.z);
-        if let (Some(g), Some(x)) = (g, x) {
-            *g = Se3::from_parts(rt, x);
+        if let (Some(g), Some((r, x))) = (g, moved) {
+            *g = Se3::from_parts(r, x);
         }
         Ok(())
     }
