@@ -475,7 +475,15 @@ impl FreeBodyFlow {
             return Err(IntegratorError::NonFinite { what: "time t" });
         }
         let orbit = self.orbit(pi, r, false)?;
-        self.evaluate(&orbit, t)
+        let (mut pi_t, r_t) = self.evaluate(&orbit, t)?;
+        if t != 0.0 && matches!(orbit.kind, OrbitKind::Elliptic(_)) {
+            // Π(t) = A p(t) with p = Aᵀ Π in the principal frame A; A is orthogonal only to
+            // round-off, so at t → 0 this is (AAᵀ)Π, the same fixed scaling at every call: a drift
+            // of |Π| and h linear in the number of calls. Adding Π − A(AᵀΠ) cancels it, so only the
+            // roundings of this call remain.
+            pi_t += pi - self.axes * self.axes.tr_mul(pi);
+        }
+        Ok((pi_t, r_t))
     }
 
     /// The orbit through (Π, R) (`reuse`: also precompute what only repeated evaluations far

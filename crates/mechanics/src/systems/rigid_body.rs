@@ -55,6 +55,10 @@ impl RigidBody {
             if axes.determinant() < 0.0 {
                 axes.column_mut(2).neg_mut();
             }
+            // One Newton–Schulz step A ← A(3I − AᵀA)/2 towards the nearest orthogonal matrix:
+            // the eigenvectors are orthonormal to a few ε, and the exact flow, restarted at every
+            // call of a splitting, maps Π to the frame and back, scaling it by AAᵀ each time.
+            let axes = (axes * (Matrix3::identity() * 3.0 - axes.transpose() * axes)) * 0.5;
             (axes, eig.eigenvalues)
         };
         let inv_moments = moments.map(|m| 1.0 / m);
