@@ -253,61 +253,52 @@ fn rc_one<S: Simd>(e: F<S>, mask: M<S>) -> (F<S>, M<S>) {
 
 /// Carlson's `R_F(x, y, z)` (for the lanes of `need_f`) and `R_J(x, y, z, p)` (for the lanes of
 /// `need_j`) by the duplication of `elliptic`'s `carlson_rf` and `carlson_rj`, operation for
-/// operation: the two share their (x, y, z) sequence, and each lane's value is frozen at the
-/// iteration where the scalar loop stops for it (NaN after 64, as the scalar). Also the lanes
-/// that need the scalar path (`rc_one`).
+/// operation: the two share their (x, y, z) sequence, and each lane stops where the scalar loop
+/// stops for it (NaN after 64, as the scalar). A lane's arguments are frozen there by a select
+/// while its neighbours iterate on, and each truncated series is evaluated once, after the loop,
+/// on every lane's frozen arguments — the scalar's operations on the scalar's values, whatever
+/// the iteration at which each lane stopped. Also the lanes that need the scalar path (`rc_one`).
 #[inline(always)]
 fn carlson<S: Simd>(xyzp: [F<S>; 4], need_f: M<S>, need_j: M<S>) -> (F<S>, F<S>, M<S>) {
     let [mut x, mut y, mut z, mut p] = xyzp;
     let s = x.s;
+    let one = k(s, 1.0);
     let delta = ((p - x) * (p - y)) * (p - z);
-    let (mut sum, mut fac) = (k(s, 0.0), k(s, 1.0));
-    let nan = k(s, f64::NAN);
-    let (mut rf, mut rj) = (nan, nan);
+    let (mut sum, mut fac) = (k(s, 0.0), one);
     let (mut pend_f, mut pend_j) = (need_f, need_j);
-    let mut bad = need_j.and(need_j.not());
+    let none = need_j.and(need_j.not());
+    let (mut bad, mut done_f_all, mut done_j_all) = (none, none, none);
+    // Each lane's arguments where its R_F and its R_J stop (R_J's p, 4⁻ᵐ and sum stop changing
+    // there by themselves).
+    let (mut xf, mut yf, mut af) = (x, y, one);
+    let (mut xj, mut yj, mut zj, mut aj) = (x, y, z, one);
     for _ in 0..64 {
-        if !pend_f.or(pend_j).any() {
-            break;
-        }
-        // R_F's test and series.
-        let af = ((x + y) + z) / 3.0;
-        let spread_f = (af - x).abs().max((af - y).abs()).max((af - z).abs());
-        let done_f = pend_f.and(spread_f.le(af.abs() * SPREAD));
-        if done_f.any() {
-            let (dx, dy) = (k(s, 1.0) - x / af, k(s, 1.0) - y / af);
-            let dz = -dx - dy;
-            let e2 = dx * dy - dz * dz;
-            let e3 = (dx * dy) * dz;
-            let v = ((((k(s, 1.0) - e2 / 10.0) + e3 / 14.0) + (e2 * e2) / 24.0)
-                - ((e2 * 3.0) * e3) / 44.0)
-                / af.sqrt();
-            rf = done_f.select(v, rf);
-            pend_f = pend_f.and(done_f.not());
+        // R_F's test.
+        if pend_f.any() {
+            let a = ((x + y) + z) / 3.0;
+            let spread = (a - x).abs().max((a - y).abs()).max((a - z).abs());
+            let done = pend_f.and(spread.le(a.abs() * SPREAD));
+            xf = done.select(x, xf);
+            yf = done.select(y, yf);
+            af = done.select(a, af);
+            done_f_all = done_f_all.or(done);
+            pend_f = pend_f.and(done.not());
         }
         // R_J's.
-        let a = (((x + y) + z) + p * 2.0) / 5.0;
-        let spread = (a - x)
-            .abs()
-            .max((a - y).abs())
-            .max((a - z).abs())
-            .max((a - p).abs());
-        let done_j = pend_j.and(spread.le(a.abs() * SPREAD));
-        if done_j.any() {
-            let (dx, dy, dz) = (k(s, 1.0) - x / a, k(s, 1.0) - y / a, k(s, 1.0) - z / a);
-            let dp = k(s, -0.5) * ((dx + dy) + dz);
-            let e2 = ((dx * dy + dx * dz) + dy * dz) - (dp * 3.0) * dp;
-            let e3 = ((dx * dy) * dz + (e2 * 2.0) * dp) + ((dp * 4.0) * dp) * dp;
-            let e4 = ((((dx * 2.0) * dy) * dz + e2 * dp) + ((dp * 3.0) * dp) * dp) * dp;
-            let e5 = (((dx * dy) * dz) * dp) * dp;
-            let series = (((((k(s, 1.0) - (e2 * 3.0) / 14.0) + e3 / 6.0)
-                + ((e2 * 9.0) * e2) / 88.0)
-                - (e4 * 3.0) / 22.0)
-                - ((e2 * 9.0) * e3) / 52.0)
-                + (e5 * 3.0) / 26.0;
-            let v = (fac * series) / (a * a.sqrt()) + sum * 6.0;
-            rj = done_j.select(v, rj);
-            pend_j = pend_j.and(done_j.not());
+        if pend_j.any() {
+            let a = (((x + y) + z) + p * 2.0) / 5.0;
+            let spread = (a - x)
+                .abs()
+                .max((a - y).abs())
+                .max((a - z).abs())
+                .max((a - p).abs());
+            let done = pend_j.and(spread.le(a.abs() * SPREAD));
+            xj = done.select(x, xj);
+            yj = done.select(y, yj);
+            zj = done.select(z, zj);
+            aj = done.select(a, aj);
+            done_j_all = done_j_all.or(done);
+            pend_j = pend_j.and(done.not());
         }
         let active = pend_f.or(pend_j);
         if !active.any() {
@@ -328,6 +319,34 @@ fn carlson<S: Simd>(xyzp: [F<S>; 4], need_f: M<S>, need_j: M<S>) -> (F<S>, F<S>,
         z = active.select(k(s, 0.25) * (z + lam), z);
         p = pend_j.select(k(s, 0.25) * (p + lam), p);
     }
+    let nan = k(s, f64::NAN);
+    let rf = if done_f_all.any() {
+        let (dx, dy) = (one - xf / af, one - yf / af);
+        let dz = -dx - dy;
+        let e2 = dx * dy - dz * dz;
+        let e3 = (dx * dy) * dz;
+        let v = ((((one - e2 / 10.0) + e3 / 14.0) + (e2 * e2) / 24.0) - ((e2 * 3.0) * e3) / 44.0)
+            / af.sqrt();
+        done_f_all.select(v, nan)
+    } else {
+        nan
+    };
+    let rj = if done_j_all.any() {
+        let (dx, dy, dz) = (one - xj / aj, one - yj / aj, one - zj / aj);
+        let dp = k(s, -0.5) * ((dx + dy) + dz);
+        let e2 = ((dx * dy + dx * dz) + dy * dz) - (dp * 3.0) * dp;
+        let e3 = ((dx * dy) * dz + (e2 * 2.0) * dp) + ((dp * 4.0) * dp) * dp;
+        let e4 = ((((dx * 2.0) * dy) * dz + e2 * dp) + ((dp * 3.0) * dp) * dp) * dp;
+        let e5 = (((dx * dy) * dz) * dp) * dp;
+        let series = (((((one - (e2 * 3.0) / 14.0) + e3 / 6.0) + ((e2 * 9.0) * e2) / 88.0)
+            - (e4 * 3.0) / 22.0)
+            - ((e2 * 9.0) * e3) / 52.0)
+            + (e5 * 3.0) / 26.0;
+        let v = (fac * series) / (aj * aj.sqrt()) + sum * 6.0;
+        done_j_all.select(v, nan)
+    } else {
+        nan
+    };
     (rf, rj, bad)
 }
 
