@@ -63,8 +63,17 @@ pub trait Kernel: Sync + Send + Clone {
     /// Writes the state back.
     fn store<S: Simd>(&self, st: &Self::State<S>, group: &mut [f64], off: usize);
     /// One step of size h in place; `renormalize` on the steps where the attitude is brought
-    /// back onto SO(3).
-    fn step<S: Simd>(&self, st: &mut Self::State<S>, h: f64, renormalize: bool);
+    /// back onto SO(3). `group` and `off` are the lanes' stored components as [`Kernel::load`]
+    /// read them, unchanged until [`Kernel::store`]: a kernel with many constants per lane reads
+    /// them there, where it uses them, instead of carrying a copy in its state.
+    fn step<S: Simd>(
+        &self,
+        st: &mut Self::State<S>,
+        group: &[f64],
+        off: usize,
+        h: f64,
+        renormalize: bool,
+    );
     /// `if m { a } else { b }` lane by lane.
     fn select<S: Simd>(m: M<S>, a: &Self::State<S>, b: &Self::State<S>) -> Self::State<S>;
     /// Lanes whose state is finite.
@@ -160,27 +169,32 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
         let monitor = sch.monitor_every.is_some_and(|m| outer.is_multiple_of(m));
         for group in block.chunks_exact_mut(glen) {
             for off in (0..GROUP).step_by(w) {
-                let st = kernel.load(s, group, off);
+                let mut new = kernel.load(s, group, off);
                 let alive = F::load(s, &group[(c + Book::Alive as usize) * GROUP + off..]).eq(one);
-                let mut new = st;
                 let inner0 = sch.inner_before + k * sch.subs.len() as u64;
                 let every = kernel.renormalize_every();
                 let renorms = kernel.renormalizes();
                 if let [h] = sch.subs {
                     // One sub-step (no composition): straight-line code.
-                    kernel.step(&mut new, *h, renorms && (inner0 + 1).is_multiple_of(every));
+                    let renorm = renorms && (inner0 + 1).is_multiple_of(every);
+                    kernel.step(&mut new, group, off, *h, renorm);
                 } else {
                     for (j, &hs) in sch.subs.iter().enumerate() {
                         let renorm = renorms && (inner0 + j as u64 + 1).is_multiple_of(every);
-                        kernel.step(&mut new, hs, renorm);
+                        kernel.step(&mut new, group, off, hs, renorm);
                     }
                 }
                 let ok = kernel.finite(&new).and(alive);
                 // Every lane stepped (the usual case): the new state as it is, without the
                 // blend that keeps a failed or stopped lane's old state; the same bits.
                 let all = !ok.not().any();
-                let st = if all { new } else { K::select(ok, &new, &st) };
-                kernel.store(&st, group, off);
+                // The old state is still the group's (nothing is stored before this): a failed
+                // lane's is read back from it rather than kept in a copy through the step.
+                if !all {
+                    new = K::select(ok, &new, &kernel.load(s, group, off));
+                }
+                let st = &new;
+                kernel.store(st, group, off);
                 if !all {
                     let failed = alive.and(ok.not());
                     if failed.any() {
@@ -189,9 +203,9 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
                 }
                 if monitor {
                     if all {
-                        monitor_all(s, kernel, &st, group, off);
+                        monitor_all(s, kernel, st, group, off);
                     } else {
-                        monitor_lanes(s, kernel, &st, ok, group, off);
+                        monitor_lanes(s, kernel, st, ok, group, off);
                     }
                 }
             }
