@@ -167,7 +167,7 @@ mod at {
 }
 
 /// One vector of lanes: the published state and the elapsed time, what a step changes (the
-/// orbit's constants stay in the group, [`Consts`]).
+/// orbit's constants stay in the lanes' group, where the step reads them).
 #[derive(Clone, Copy, Debug)]
 pub struct ExactFlowState<S: Simd> {
     pi: [F<S>; 3],
