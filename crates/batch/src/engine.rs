@@ -9,11 +9,11 @@
 //! group is padded with a benign body (Π = 0, R = I), whose results are never read. A remainder
 //! is therefore no separate code path: every lane, padding included, is the same kernel.
 //!
-//! **Order of work.** Groups are dealt out in blocks of [`BLOCK_GROUPS`] (128 lanes, a few
-//! kilobytes, so that a block stays in L1); within a block the loop is step-major (step k of
-//! every group, then step k + 1), so that the out-of-order core overlaps the independent vectors
-//! of one step instead of waiting on the dependency chain of one body; blocks run one after the
-//! other or on the rayon pool. None of this changes a lane's arithmetic.
+//! **Order of work.** Groups are dealt out in blocks of [`BLOCK_GROUPS`] (128 lanes); within a
+//! block each vector of lanes takes all the steps of the call in a row, its state loaded once
+//! before them and stored once after them (a failure and the monitoring write only the
+//! bookkeeping), so that no step pays for moving the state through memory; blocks run one after
+//! the other or on the rayon pool. None of this changes a lane's arithmetic.
 
 use crate::lanes::{load_n, store_n, F, M};
 use crate::{BatchError, Level};
@@ -63,8 +63,18 @@ pub trait Kernel: Sync + Send + Clone {
     /// Writes the state back.
     fn store<S: Simd>(&self, st: &Self::State<S>, group: &mut [f64], off: usize);
     /// One step of size h in place; `renormalize` on the steps where the attitude is brought
-    /// back onto SO(3).
-    fn step<S: Simd>(&self, st: &mut Self::State<S>, h: f64, renormalize: bool);
+    /// back onto SO(3). `group` and `off` are the lanes' stored components as [`Kernel::load`]
+    /// read them (the stored state there may be older than `st`; what a step never changes is
+    /// as loaded): a kernel with many constants per lane reads them there, where it uses them,
+    /// instead of carrying a copy in its state.
+    fn step<S: Simd>(
+        &self,
+        st: &mut Self::State<S>,
+        group: &[f64],
+        off: usize,
+        h: f64,
+        renormalize: bool,
+    );
     /// `if m { a } else { b }` lane by lane.
     fn select<S: Simd>(m: M<S>, a: &Self::State<S>, b: &Self::State<S>) -> Self::State<S>;
     /// Lanes whose state is finite.
@@ -153,14 +163,14 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
     let glen = group_len::<K>();
     let c = K::COMPONENTS;
     let one = F::splat(s, 1.0);
-    // The time before each step, on the scalar integrators' clock.
-    let mut clock = sch.clock_before;
-    for k in 0..sch.steps {
-        let outer = sch.outer_before + k + 1;
-        let monitor = sch.monitor_every.is_some_and(|m| outer.is_multiple_of(m));
-        for group in block.chunks_exact_mut(glen) {
-            for off in (0..GROUP).step_by(w) {
-                let st = kernel.load(s, group, off);
+    for group in block.chunks_exact_mut(glen) {
+        for off in (0..GROUP).step_by(w) {
+            // The time before each step, on the scalar integrators' clock.
+            let mut clock = sch.clock_before;
+            let mut st = kernel.load(s, group, off);
+            for k in 0..sch.steps {
+                let outer = sch.outer_before + k + 1;
+                let monitor = sch.monitor_every.is_some_and(|m| outer.is_multiple_of(m));
                 let alive = F::load(s, &group[(c + Book::Alive as usize) * GROUP + off..]).eq(one);
                 let mut new = st;
                 let inner0 = sch.inner_before + k * sch.subs.len() as u64;
@@ -168,19 +178,22 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
                 let renorms = kernel.renormalizes();
                 if let [h] = sch.subs {
                     // One sub-step (no composition): straight-line code.
-                    kernel.step(&mut new, *h, renorms && (inner0 + 1).is_multiple_of(every));
+                    let renorm = renorms && (inner0 + 1).is_multiple_of(every);
+                    kernel.step(&mut new, group, off, *h, renorm);
                 } else {
                     for (j, &hs) in sch.subs.iter().enumerate() {
                         let renorm = renorms && (inner0 + j as u64 + 1).is_multiple_of(every);
-                        kernel.step(&mut new, hs, renorm);
+                        kernel.step(&mut new, group, off, hs, renorm);
                     }
                 }
                 let ok = kernel.finite(&new).and(alive);
                 // Every lane stepped (the usual case): the new state as it is, without the
                 // blend that keeps a failed or stopped lane's old state; the same bits.
                 let all = !ok.not().any();
-                let st = if all { new } else { K::select(ok, &new, &st) };
-                kernel.store(&st, group, off);
+                if !all {
+                    new = K::select(ok, &new, &st);
+                }
+                st = new;
                 if !all {
                     let failed = alive.and(ok.not());
                     if failed.any() {
@@ -194,14 +207,13 @@ fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Sche
                         monitor_lanes(s, kernel, &st, ok, group, off);
                     }
                 }
+                clock.advance(sch.h);
             }
+            kernel.store(&st, group, off);
         }
-        clock.advance(sch.h);
     }
 }
 
-/// Marks the lanes of `failed` as failed at step `step` (0-based) at time `time`: the steps they
-/// took and the time they reached (a cold path).
 #[cold]
 #[inline(never)]
 fn record_failure<S: Simd>(

@@ -1,7 +1,7 @@
 //! The exact flow of the free rigid body on lanes: the t-dependent part of
 //! `mechanics::exact::FreeBodyFlow`'s evaluation, for the orbits of the generic elliptic kind.
 
-use crate::engine::Kernel;
+use crate::engine::{Kernel, GROUP};
 use crate::lanes::{k, load_n, select_n, store_n, F, M};
 use crate::rk4::body_energy;
 use crate::rkmk4::normalize;
@@ -166,15 +166,37 @@ mod at {
     pub const END: usize = EN + super::LEVELS;
 }
 
-/// One vector of lanes: the published state and the elapsed time (what a step changes), and
-/// every constant (loaded, never stored).
+/// One vector of lanes: the published state and the elapsed time, what a step changes (the
+/// orbit's constants stay in the lanes' group, where the step reads them).
 #[derive(Clone, Copy, Debug)]
 pub struct ExactFlowState<S: Simd> {
     pi: [F<S>; 3],
     r: [F<S>; 9],
     t: F<S>,
     carry: F<S>,
-    c: [F<S>; at::END],
+}
+
+/// The constants of one vector of lanes, read from their group where the step uses them (the
+/// group is not written during a step): a copy of all of them into the state would cost each
+/// step as much as a good part of its arithmetic.
+#[derive(Clone, Copy)]
+struct Consts<'a, S: Simd> {
+    s: S,
+    group: &'a [f64],
+    off: usize,
+}
+
+impl<S: Simd> Consts<'_, S> {
+    /// Component `i` of the lanes.
+    #[inline(always)]
+    fn at(&self, i: usize) -> F<S> {
+        F::load(self.s, &self.group[i * GROUP + self.off..])
+    }
+    /// Components `first .. first + N`.
+    #[inline(always)]
+    fn n<const N: usize>(&self, first: usize) -> [F<S>; N] {
+        load_n(self.s, self.group, first, self.off)
+    }
 }
 
 /// 2⁵²: the phase limit of `FreeBodyFlow` (t·|Π|/I_min).
@@ -253,61 +275,52 @@ fn rc_one<S: Simd>(e: F<S>, mask: M<S>) -> (F<S>, M<S>) {
 
 /// Carlson's `R_F(x, y, z)` (for the lanes of `need_f`) and `R_J(x, y, z, p)` (for the lanes of
 /// `need_j`) by the duplication of `elliptic`'s `carlson_rf` and `carlson_rj`, operation for
-/// operation: the two share their (x, y, z) sequence, and each lane's value is frozen at the
-/// iteration where the scalar loop stops for it (NaN after 64, as the scalar). Also the lanes
-/// that need the scalar path (`rc_one`).
+/// operation: the two share their (x, y, z) sequence, and each lane stops where the scalar loop
+/// stops for it (NaN after 64, as the scalar). A lane's arguments are frozen there by a select
+/// while its neighbours iterate on, and each truncated series is evaluated once, after the loop,
+/// on every lane's frozen arguments — the scalar's operations on the scalar's values, whatever
+/// the iteration at which each lane stopped. Also the lanes that need the scalar path (`rc_one`).
 #[inline(always)]
 fn carlson<S: Simd>(xyzp: [F<S>; 4], need_f: M<S>, need_j: M<S>) -> (F<S>, F<S>, M<S>) {
     let [mut x, mut y, mut z, mut p] = xyzp;
     let s = x.s;
+    let one = k(s, 1.0);
     let delta = ((p - x) * (p - y)) * (p - z);
-    let (mut sum, mut fac) = (k(s, 0.0), k(s, 1.0));
-    let nan = k(s, f64::NAN);
-    let (mut rf, mut rj) = (nan, nan);
+    let (mut sum, mut fac) = (k(s, 0.0), one);
     let (mut pend_f, mut pend_j) = (need_f, need_j);
-    let mut bad = need_j.and(need_j.not());
+    let none = need_j.and(need_j.not());
+    let (mut bad, mut done_f_all, mut done_j_all) = (none, none, none);
+    // Each lane's arguments where its R_F and its R_J stop (R_J's p, 4⁻ᵐ and sum stop changing
+    // there by themselves).
+    let (mut xf, mut yf, mut af) = (x, y, one);
+    let (mut xj, mut yj, mut zj, mut aj) = (x, y, z, one);
     for _ in 0..64 {
-        if !pend_f.or(pend_j).any() {
-            break;
-        }
-        // R_F's test and series.
-        let af = ((x + y) + z) / 3.0;
-        let spread_f = (af - x).abs().max((af - y).abs()).max((af - z).abs());
-        let done_f = pend_f.and(spread_f.le(af.abs() * SPREAD));
-        if done_f.any() {
-            let (dx, dy) = (k(s, 1.0) - x / af, k(s, 1.0) - y / af);
-            let dz = -dx - dy;
-            let e2 = dx * dy - dz * dz;
-            let e3 = (dx * dy) * dz;
-            let v = ((((k(s, 1.0) - e2 / 10.0) + e3 / 14.0) + (e2 * e2) / 24.0)
-                - ((e2 * 3.0) * e3) / 44.0)
-                / af.sqrt();
-            rf = done_f.select(v, rf);
-            pend_f = pend_f.and(done_f.not());
+        // R_F's test.
+        if pend_f.any() {
+            let a = ((x + y) + z) / 3.0;
+            let spread = (a - x).abs().max((a - y).abs()).max((a - z).abs());
+            let done = pend_f.and(spread.le(a.abs() * SPREAD));
+            xf = done.select(x, xf);
+            yf = done.select(y, yf);
+            af = done.select(a, af);
+            done_f_all = done_f_all.or(done);
+            pend_f = pend_f.and(done.not());
         }
         // R_J's.
-        let a = (((x + y) + z) + p * 2.0) / 5.0;
-        let spread = (a - x)
-            .abs()
-            .max((a - y).abs())
-            .max((a - z).abs())
-            .max((a - p).abs());
-        let done_j = pend_j.and(spread.le(a.abs() * SPREAD));
-        if done_j.any() {
-            let (dx, dy, dz) = (k(s, 1.0) - x / a, k(s, 1.0) - y / a, k(s, 1.0) - z / a);
-            let dp = k(s, -0.5) * ((dx + dy) + dz);
-            let e2 = ((dx * dy + dx * dz) + dy * dz) - (dp * 3.0) * dp;
-            let e3 = ((dx * dy) * dz + (e2 * 2.0) * dp) + ((dp * 4.0) * dp) * dp;
-            let e4 = ((((dx * 2.0) * dy) * dz + e2 * dp) + ((dp * 3.0) * dp) * dp) * dp;
-            let e5 = (((dx * dy) * dz) * dp) * dp;
-            let series = (((((k(s, 1.0) - (e2 * 3.0) / 14.0) + e3 / 6.0)
-                + ((e2 * 9.0) * e2) / 88.0)
-                - (e4 * 3.0) / 22.0)
-                - ((e2 * 9.0) * e3) / 52.0)
-                + (e5 * 3.0) / 26.0;
-            let v = (fac * series) / (a * a.sqrt()) + sum * 6.0;
-            rj = done_j.select(v, rj);
-            pend_j = pend_j.and(done_j.not());
+        if pend_j.any() {
+            let a = (((x + y) + z) + p * 2.0) / 5.0;
+            let spread = (a - x)
+                .abs()
+                .max((a - y).abs())
+                .max((a - z).abs())
+                .max((a - p).abs());
+            let done = pend_j.and(spread.le(a.abs() * SPREAD));
+            xj = done.select(x, xj);
+            yj = done.select(y, yj);
+            zj = done.select(z, zj);
+            aj = done.select(a, aj);
+            done_j_all = done_j_all.or(done);
+            pend_j = pend_j.and(done.not());
         }
         let active = pend_f.or(pend_j);
         if !active.any() {
@@ -328,6 +341,34 @@ fn carlson<S: Simd>(xyzp: [F<S>; 4], need_f: M<S>, need_j: M<S>) -> (F<S>, F<S>,
         z = active.select(k(s, 0.25) * (z + lam), z);
         p = pend_j.select(k(s, 0.25) * (p + lam), p);
     }
+    let nan = k(s, f64::NAN);
+    let rf = if done_f_all.any() {
+        let (dx, dy) = (one - xf / af, one - yf / af);
+        let dz = -dx - dy;
+        let e2 = dx * dy - dz * dz;
+        let e3 = (dx * dy) * dz;
+        let v = ((((one - e2 / 10.0) + e3 / 14.0) + (e2 * e2) / 24.0) - ((e2 * 3.0) * e3) / 44.0)
+            / af.sqrt();
+        done_f_all.select(v, nan)
+    } else {
+        nan
+    };
+    let rj = if done_j_all.any() {
+        let (dx, dy, dz) = (one - xj / aj, one - yj / aj, one - zj / aj);
+        let dp = k(s, -0.5) * ((dx + dy) + dz);
+        let e2 = ((dx * dy + dx * dz) + dy * dz) - (dp * 3.0) * dp;
+        let e3 = ((dx * dy) * dz + (e2 * 2.0) * dp) + ((dp * 4.0) * dp) * dp;
+        let e4 = ((((dx * 2.0) * dy) * dz + e2 * dp) + ((dp * 3.0) * dp) * dp) * dp;
+        let e5 = (((dx * dy) * dz) * dp) * dp;
+        let series = (((((one - (e2 * 3.0) / 14.0) + e3 / 6.0) + ((e2 * 9.0) * e2) / 88.0)
+            - (e4 * 3.0) / 22.0)
+            - ((e2 * 9.0) * e3) / 52.0)
+            + (e5 * 3.0) / 26.0;
+        let v = (fac * series) / (aj * aj.sqrt()) + sum * 6.0;
+        done_j_all.select(v, nan)
+    } else {
+        nan
+    };
     (rf, rj, bad)
 }
 
@@ -350,21 +391,21 @@ impl ExactFlow {
     fn elliptic<S: Simd>(
         &self,
         st: &ExactFlowState<S>,
+        c: Consts<'_, S>,
         lanes: M<S>,
     ) -> ([F<S>; 3], [F<S>; 9], M<S>) {
-        let c = &st.c;
         let t = st.t;
         let s = t.s;
         let one = k(s, 1.0);
         // u = u₀ + λ·t·2ᵉ, reduced to the nearest quarter period (`Modulus::advance`).
-        let tau = t * c[at::SCALE];
-        let du = c[at::LAMBDA] * tau;
-        let x = c[at::W0] + du;
-        let m = round(x / c[at::QUARTER]);
+        let tau = t * c.at(at::SCALE);
+        let du = c.at(at::LAMBDA) * tau;
+        let x = c.at(at::W0) + du;
+        let m = round(x / c.at(at::QUARTER));
         let zero = k(s, 0.0);
         let keep = m.eq(zero).or(m.eq(m).not());
-        let n = keep.select(c[at::N0], c[at::N0] + m);
-        let w = keep.select(x, x - m * c[at::QUARTER]);
+        let n = keep.select(c.at(at::N0), c.at(at::N0) + m);
+        let w = keep.select(x, x - m * c.at(at::QUARTER));
         // n mod 4 from the low bits of n + 1.5·2⁵² (n is an integer, |n| < 2⁵¹).
         let nb = n + ROUNDER;
         let odd = nb.bits_clear(1).not();
@@ -372,19 +413,19 @@ impl ExactFlow {
         // Bulirsch's sn, cn of |w| (`sn_cn_dn`): sin, cos of u·c, then the ascent over the
         // lane's own levels.
         let u = w.abs();
-        let (sn0, cn0) = sin_cos(u * c[at::AGM_C]);
+        let (sn0, cn0) = sin_cos(u * c.at(at::AGM_C));
         let mut a = cn0 / sn0;
-        let mut cc = c[at::AGM_C] * a;
+        let mut cc = c.at(at::AGM_C) * a;
         let mut dn = one;
         for ii in (0..LEVELS).rev() {
-            let active = k(s, ii as f64).le(c[at::AGM_L]).and(lanes);
+            let active = k(s, ii as f64).le(c.at(at::AGM_L)).and(lanes);
             if !active.any() {
                 continue;
             }
-            let b = c[at::EM + ii];
+            let b = c.at(at::EM + ii);
             let a1 = a * cc;
             let c1 = cc * dn;
-            let d1 = (c[at::EN + ii] + a1) / (b + a1);
+            let d1 = (c.at(at::EN + ii) + a1) / (b + a1);
             a = active.select(c1 / b, a);
             cc = active.select(c1, cc);
             dn = active.select(d1, dn);
@@ -395,33 +436,37 @@ impl ExactFlow {
         let big_s = nonzero.select(sn1, sn0).copysign(w);
         let big_c = nonzero.select(cc * sn1, cn0);
         // `Modulus::jacobi`.
-        let (kc2, kc) = (c[at::KC2], c[at::KC]);
+        let (kc2, kc) = (c.at(at::KC2), c.at(at::KC));
         let big_d = (big_c * big_c + (kc2 * big_s) * big_s).sqrt();
         let ksc = (kc * big_s) / big_c;
         let sn = odd.select((sign * big_c) / big_d, sign * big_s);
         let cn = odd.select(((-sign * kc) * big_s) / big_d, sign * big_c);
         let dn = odd.select(kc / big_d, big_d);
         // Π(t) = 2ᵉ P q(t).
-        let qt = [c[at::AMP] * cn, c[at::AMP + 1] * sn, c[at::AMP + 2] * dn];
-        let p = &c[at::PMAT..at::PMAT + 9];
+        let qt = [
+            c.at(at::AMP) * cn,
+            c.at(at::AMP + 1) * sn,
+            c.at(at::AMP + 2) * dn,
+        ];
+        let p: [F<S>; 9] = c.n(at::PMAT);
         let mut pi = [zero; 3];
         for i in 0..3 {
-            pi[i] =
-                ((p[3 * i] * qt[0] + p[3 * i + 1] * qt[1]) + p[3 * i + 2] * qt[2]) * c[at::SCALE];
+            pi[i] = ((p[3 * i] * qt[0] + p[3 * i + 1] * qt[1]) + p[3 * i + 2] * qt[2])
+                * c.at(at::SCALE);
         }
         // ΔΛ (`Modulus::third_kind_part`, the slope form for β < 1) and ΔG.
-        let slope = c[at::SLOPE].eq(one);
+        let slope = c.at(at::SLOPE).eq(one);
         let (part, bad) = self.third_kind_part(c, w, odd, slope, [big_s, big_c, big_d], lanes);
-        let dnq = n - c[at::N0];
-        let d_lambda = c[at::SLOPE] * du + (part - c[at::PART0]);
-        let d_lambda = dnq.eq(zero).select(d_lambda, d_lambda + dnq * c[at::LQ]);
-        let sb = c[at::SB];
+        let dnq = n - c.at(at::N0);
+        let d_lambda = c.at(at::SLOPE) * du + (part - c.at(at::PART0));
+        let d_lambda = dnq.eq(zero).select(d_lambda, d_lambda + dnq * c.at(at::LQ));
+        let sb = c.at(at::SB);
         let g_arg = odd.select(ksc / sb, (sb * big_s) / big_c);
-        let d_g = (dnq * FRAC_PI_2 + (atan(g_arg) - c[at::ATAN0])) / sb;
-        let dpsi = (c[at::NORM] * tau) / c[at::I3]
-            + c[at::FACTOR] * (c[at::NORM] * d_lambda - c[at::AMP + 2] * d_g);
+        let d_g = (dnq * FRAC_PI_2 + (atan(g_arg) - c.at(at::ATAN0))) / sb;
+        let dpsi = (c.at(at::NORM) * tau) / c.at(at::I3)
+            + c.at(at::FACTOR) * (c.at(at::NORM) * d_lambda - c.at(at::AMP + 2) * d_g);
         // B(n(t)) for n = q/|q|: I + v̂ + v̂²/(1 + n₃), v = e₃ × n.
-        let inv = c[at::INV_NORM];
+        let inv = c.at(at::INV_NORM);
         let (nx, ny, nz) = (qt[0] * inv, qt[1] * inv, qt[2] * inv);
         let den = one + nz;
         let nxy = -(nx * ny) / den;
@@ -436,12 +481,10 @@ impl ExactFlow {
             -ny,
             one - (nx * nx + ny * ny) / den,
         ];
-        let mut pm = [zero; 9];
-        pm.copy_from_slice(p);
-        let bt = mul3(&pm, &b);
+        let bt = mul3(&p, &b);
         // R₀ P B(n₀) exp(Δψ ê₃): its first two columns turned by Δψ.
         let (sin, cos) = sin_cos(dpsi);
-        let st0 = &c[at::START..at::START + 9];
+        let st0: [F<S>; 9] = c.n(at::START);
         let mut rot = [zero; 9];
         for i in 0..3 {
             let (c0, c1) = (st0[3 * i], st0[3 * i + 1]);
@@ -468,7 +511,7 @@ impl ExactFlow {
     #[inline(always)]
     fn third_kind_part<S: Simd>(
         &self,
-        c: &[F<S>; at::END],
+        c: Consts<'_, S>,
         w: F<S>,
         odd: M<S>,
         slope: M<S>,
@@ -479,24 +522,24 @@ impl ExactFlow {
         let one = k(s, 1.0);
         let (c2, d2) = (big_c * big_c, big_d * big_d);
         let s3 = (big_s * big_s) * big_s;
-        let beta = c[at::BETA];
-        let p_odd = c2 + ((c[at::KC2] * big_s) * big_s) / c[at::OPB];
+        let beta = c.at(at::BETA);
+        let p_odd = c2 + ((c.at(at::KC2) * big_s) * big_s) / c.at(at::OPB);
         let p_slope = one + (beta * big_s) * big_s;
-        let p_even = one + ((c[at::K2] * big_s) * big_s) / beta;
+        let p_even = one + ((c.at(at::K2) * big_s) * big_s) / beta;
         let p = odd.select(p_odd, slope.select(p_slope, p_even));
         let need_f = odd.and(slope.not()).and(lanes);
         let (rf, rj, bad) = carlson([c2, d2, one, p], need_f, lanes);
         // odd n
-        let rj_odd = (c[at::NU3] * s3) * rj;
-        let odd_slope = ((-beta) * w) / c[at::OPB] + (c[at::BK] * rj_odd) / c[at::DEN];
+        let rj_odd = (c.at(at::NU3) * s3) * rj;
+        let odd_slope = ((-beta) * w) / c.at(at::OPB) + (c.at(at::BK) * rj_odd) / c.at(at::DEN);
         let pi_nu = big_s * rf + rj_odd;
-        let odd_full = (c[at::K2] * w + (c[at::BK] * pi_nu) / c[at::OPB]) / c[at::K2B];
+        let odd_full = (c.at(at::K2) * w + (c.at(at::BK) * pi_nu) / c.at(at::OPB)) / c.at(at::K2B);
         // even n
-        let even_slope = (c[at::MB3] * s3) * rj;
+        let even_slope = (c.at(at::MB3) * s3) * rj;
         let full = odd.not().and(slope.not()).and(lanes);
         let even_full = if full.any() {
-            let q = c[at::Q];
-            atan((q * big_s) / (big_c * big_d)) / q + (c[at::K3B] * s3) * rj
+            let q = c.at(at::Q);
+            atan((q * big_s) / (big_c * big_d)) / q + (c.at(at::K3B) * s3) * rj
         } else {
             even_slope
         };
@@ -511,7 +554,7 @@ impl ExactFlow {
     /// at its elapsed time, NaN where it fails (a cold path: out of line).
     #[cold]
     #[inline(never)]
-    fn scalar_lanes<S: Simd>(&self, st: &mut ExactFlowState<S>, mask: M<S>) {
+    fn scalar_lanes<S: Simd>(&self, st: &mut ExactFlowState<S>, c: Consts<'_, S>, mask: M<S>) {
         let w = S::F64_LANES;
         let s = st.t.s;
         let flags = mask.select(k(s, 1.0), k(s, 0.0));
@@ -520,7 +563,7 @@ impl ExactFlow {
             o[..w].copy_from_slice(&v.lanes()[..w]);
         }
         for l in (0..w).filter(|&l| flags.lanes()[l] == 1.0) {
-            let lane = |i: usize| st.c[i].lanes()[l];
+            let lane = |i: usize| c.at(i).lanes()[l];
             let pi0 = Vector3::new(lane(at::PI0), lane(at::PI0 + 1), lane(at::PI0 + 2));
             let r0 = So3::from_matrix_unchecked(&Matrix3::from_fn(|i, j| lane(at::R0 + 3 * i + j)));
             let got = match self.flow.advance(st.t.lanes()[l], &pi0, Some(&r0)) {
@@ -652,49 +695,55 @@ impl Kernel for ExactFlow {
     }
     #[inline(always)]
     fn load<S: Simd>(&self, s: S, group: &[f64], off: usize) -> ExactFlowState<S> {
-        let c: [F<S>; at::END] = load_n(s, group, 0, off);
-        let mut r = [c[at::R]; 9];
-        r.copy_from_slice(&c[at::R..at::R + 9]);
+        let [t] = load_n(s, group, at::T, off);
+        let [carry] = load_n(s, group, at::CARRY, off);
         ExactFlowState {
-            pi: [c[at::PI], c[at::PI + 1], c[at::PI + 2]],
-            r,
-            t: c[at::T],
-            carry: c[at::CARRY],
-            c,
+            pi: load_n(s, group, at::PI, off),
+            r: load_n(s, group, at::R, off),
+            t,
+            carry,
         }
     }
     #[inline(always)]
     fn store<S: Simd>(&self, st: &ExactFlowState<S>, group: &mut [f64], off: usize) {
         store_n(&st.pi, group, at::PI, off);
         store_n(&st.r, group, at::R, off);
-        store_n(&[st.t, st.carry], group, at::T, off);
+        store_n(&[st.t], group, at::T, off);
+        store_n(&[st.carry], group, at::CARRY, off);
     }
     #[inline(always)]
-    fn step<S: Simd>(&self, st: &mut ExactFlowState<S>, h: f64, _renormalize: bool) {
+    fn step<S: Simd>(
+        &self,
+        st: &mut ExactFlowState<S>,
+        group: &[f64],
+        off: usize,
+        h: f64,
+        _renormalize: bool,
+    ) {
         let (t, carry) = clock_advance(st.t, st.carry, h);
         st.t = t;
         st.carry = carry;
         let s = t.s;
-        let mode = st.c[at::MODE];
+        let c = Consts { s, group, off };
+        let mode = c.at(at::MODE);
         let scalar = mode.eq(k(s, SCALAR));
         if self.axisymmetric {
             // Every body of an axisymmetric model is of that kind.
-            self.scalar_lanes(st, scalar);
+            self.scalar_lanes(st, c, scalar);
             return;
         }
         let elliptic = mode.eq(k(s, ELLIPTIC));
-        let pi0 = [st.c[at::PI0], st.c[at::PI0 + 1], st.c[at::PI0 + 2]];
-        let mut r0 = [t; 9];
-        r0.copy_from_slice(&st.c[at::R0..at::R0 + 9]);
+        let pi0: [F<S>; 3] = c.n(at::PI0);
+        let r0: [F<S>; 9] = c.n(at::R0);
         let (pi, r, fallback) = if elliptic.any() {
-            self.elliptic(st, elliptic)
+            self.elliptic(st, c, elliptic)
         } else {
             (pi0, r0, elliptic)
         };
         // `FreeBodyFlow::evaluate`'s order: t = 0 returns (Π₀, R₀); then beyond the phase limit
         // (or a NaN phase) an error, NaN here; then the body at rest keeps (Π₀, R₀).
         let at_start = t.eq(k(s, 0.0));
-        let in_phase = (t.abs() * st.c[at::RATE]).lt(k(s, PHASE_LIMIT));
+        let in_phase = (t.abs() * c.at(at::RATE)).lt(k(s, PHASE_LIMIT));
         let rest = mode.eq(k(s, REST));
         let nan = k(s, f64::NAN);
         for i in 0..3 {
@@ -707,7 +756,7 @@ impl Kernel for ExactFlow {
         }
         let fallback = scalar.or(fallback.and(at_start.not()).and(in_phase));
         if fallback.any() {
-            self.scalar_lanes(st, fallback);
+            self.scalar_lanes(st, c, fallback);
         }
     }
     #[inline(always)]
@@ -717,7 +766,6 @@ impl Kernel for ExactFlow {
             r: select_n(m, &a.r, &b.r),
             t: m.select(a.t, b.t),
             carry: m.select(a.carry, b.carry),
-            c: a.c,
         }
     }
     #[inline(always)]

@@ -156,7 +156,14 @@ impl Kernel for QuaternionRk4 {
         store_n(&st.pi, group, 4, off);
     }
     #[inline(always)]
-    fn step<S: Simd>(&self, st: &mut Rk4State<S>, h: f64, _renormalize: bool) {
+    fn step<S: Simd>(
+        &self,
+        st: &mut Rk4State<S>,
+        _group: &[f64],
+        _off: usize,
+        h: f64,
+        _renormalize: bool,
+    ) {
         let half = 0.5 * h;
         let (q, pi) = (st.q, st.pi);
         let (l1, k1) = self.rate(q, pi);

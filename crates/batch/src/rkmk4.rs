@@ -332,7 +332,14 @@ impl Kernel for Rkmk4 {
         store_n(&st.r, group, 3, off);
     }
     #[inline(always)]
-    fn step<S: Simd>(&self, st: &mut Rkmk4State<S>, h: f64, renormalize: bool) {
+    fn step<S: Simd>(
+        &self,
+        st: &mut Rkmk4State<S>,
+        _group: &[f64],
+        _off: usize,
+        h: f64,
+        renormalize: bool,
+    ) {
         if self.body.field.is_some() {
             self.step_lanes::<S, true>(st, h, renormalize)
         } else {

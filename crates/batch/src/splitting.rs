@@ -283,7 +283,14 @@ impl Kernel for Strang {
         store_n(&[st.lag], group, 12, off);
     }
     #[inline(always)]
-    fn step<S: Simd>(&self, st: &mut StrangState<S>, h: f64, renormalize: bool) {
+    fn step<S: Simd>(
+        &self,
+        st: &mut StrangState<S>,
+        _group: &[f64],
+        _off: usize,
+        h: f64,
+        renormalize: bool,
+    ) {
         self.step_any(st, h, renormalize)
     }
     fn run_schedule(
@@ -406,7 +413,14 @@ impl<const P: usize, const Q: usize, const FIELD: bool> Kernel for StrangFixed<P
         self.0.store(st, group, off)
     }
     #[inline(always)]
-    fn step<S: Simd>(&self, st: &mut StrangState<S>, h: f64, renormalize: bool) {
+    fn step<S: Simd>(
+        &self,
+        st: &mut StrangState<S>,
+        _group: &[f64],
+        _off: usize,
+        h: f64,
+        renormalize: bool,
+    ) {
         strang_step::<S, P, Q, FIELD>(&self.0.body, st, h, renormalize)
     }
     #[inline(always)]
