@@ -20,7 +20,9 @@ use nalgebra::{DMatrix, DMatrixView};
 pub use proptest;
 
 mod allocations;
+mod cases;
 pub use allocations::{allocations, CountingAllocator};
+pub use cases::check_cases;
 use proptest::prelude::*;
 
 /// A proptest strategy for algebra elements with components uniform in [−scale, scale].
@@ -754,53 +756,117 @@ pub fn check_cayley_closed_forms<G: CayleyGroup>(a: &G::Algebra) {
 }
 
 /// Instantiates the group checks for one group: `lie_group_suite!(module, Type, scale)`, with
-/// algebra components drawn uniformly from [−scale, scale].
+/// algebra components drawn uniformly from [−scale, scale]. Each test runs through
+/// [`check_cases`], so that the tests of one group share two compiled runners (one for a single
+/// algebra element, one for three).
 #[macro_export]
 macro_rules! lie_group_suite {
     ($name:ident, $G:ty, $scale:expr) => {
         mod $name {
             #[allow(unused_imports)]
             use super::*;
-            use $crate::testing::proptest::prelude::*;
             use $crate::testing::{
-                algebra, check_adjoint, check_dexp, check_exp_log, check_group_axioms,
-                check_jacobians, check_operations_near_zero,
-                check_plus_minus_between_interpolate,
+                algebra, check_adjoint, check_cases, check_dexp, check_exp_log, check_group_axioms,
+                check_jacobians, check_operations_near_zero, check_plus_minus_between_interpolate,
             };
             type G = $G;
-            $crate::testing::proptest::proptest! {
-                #![proptest_config(ProptestConfig::with_cases(48))]
-                #[test]
-                fn group_axioms_hold(a in algebra::<G>($scale), b in algebra::<G>($scale), c in algebra::<G>($scale)) {
-                    check_group_axioms::<G>(&a, &b, &c);
-                }
-                #[test]
-                fn exp_log_round_trip_and_match_matrix_series(a in algebra::<G>($scale)) {
-                    check_exp_log::<G>(&a);
-                }
-                #[test]
-                fn adjoint_is_homomorphism_dual_and_jacobi_holds(a in algebra::<G>($scale), b in algebra::<G>($scale), c in algebra::<G>($scale)) {
-                    check_adjoint::<G>(&a, &b, &c);
-                }
-                #[test]
-                fn dexp_matches_finite_differences_and_inverts(a in algebra::<G>($scale)) {
-                    check_dexp::<G>(&a);
-                }
-                #[test]
-                fn plus_minus_invert_and_interpolation_has_constant_speed(a in algebra::<G>($scale), b in algebra::<G>($scale), c in algebra::<G>($scale)) {
-                    check_plus_minus_between_interpolate::<G>(&a, &b, &c);
-                }
-                #[test]
-                fn jacobians_match_finite_differences(a in algebra::<G>($scale), b in algebra::<G>($scale), c in algebra::<G>($scale)) {
-                    check_jacobians::<G>(&a, &b, &c);
-                }
+            #[test]
+            fn group_axioms_hold() {
+                check_cases(
+                    concat!(module_path!(), "::group_axioms_hold"),
+                    file!(),
+                    48,
+                    &(
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                    ),
+                    &|(a, b, c)| check_group_axioms::<G>(&a, &b, &c),
+                );
             }
-            $crate::testing::proptest::proptest! {
-                #![proptest_config(ProptestConfig::with_cases(8))]
-                #[test]
-                fn operations_and_jacobians_hold_near_zero(u in algebra::<G>(1.0), v in algebra::<G>(1.0), w in algebra::<G>(1.0)) {
-                    check_operations_near_zero::<G>(&u, &v, &w);
-                }
+            #[test]
+            fn exp_log_round_trip_and_match_matrix_series() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::exp_log_round_trip_and_match_matrix_series"
+                    ),
+                    file!(),
+                    48,
+                    &algebra::<G>($scale),
+                    &|a| check_exp_log::<G>(&a),
+                );
+            }
+            #[test]
+            fn adjoint_is_homomorphism_dual_and_jacobi_holds() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::adjoint_is_homomorphism_dual_and_jacobi_holds"
+                    ),
+                    file!(),
+                    48,
+                    &(
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                    ),
+                    &|(a, b, c)| check_adjoint::<G>(&a, &b, &c),
+                );
+            }
+            #[test]
+            fn dexp_matches_finite_differences_and_inverts() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::dexp_matches_finite_differences_and_inverts"
+                    ),
+                    file!(),
+                    48,
+                    &algebra::<G>($scale),
+                    &|a| check_dexp::<G>(&a),
+                );
+            }
+            #[test]
+            fn plus_minus_invert_and_interpolation_has_constant_speed() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::plus_minus_invert_and_interpolation_has_constant_speed"
+                    ),
+                    file!(),
+                    48,
+                    &(
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                    ),
+                    &|(a, b, c)| check_plus_minus_between_interpolate::<G>(&a, &b, &c),
+                );
+            }
+            #[test]
+            fn jacobians_match_finite_differences() {
+                check_cases(
+                    concat!(module_path!(), "::jacobians_match_finite_differences"),
+                    file!(),
+                    48,
+                    &(
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                        algebra::<G>($scale),
+                    ),
+                    &|(a, b, c)| check_jacobians::<G>(&a, &b, &c),
+                );
+            }
+            #[test]
+            fn operations_and_jacobians_hold_near_zero() {
+                check_cases(
+                    concat!(module_path!(), "::operations_and_jacobians_hold_near_zero"),
+                    file!(),
+                    8,
+                    &(algebra::<G>(1.0), algebra::<G>(1.0), algebra::<G>(1.0)),
+                    &|(u, v, w)| check_operations_near_zero::<G>(&u, &v, &w),
+                );
             }
         }
     };
@@ -813,39 +879,65 @@ macro_rules! action_suite {
         mod $name {
             #[allow(unused_imports)]
             use super::*;
-            use $crate::testing::proptest::prelude::*;
-            use $crate::testing::{algebra, check_action};
-            $crate::testing::proptest::proptest! {
-                #![proptest_config(ProptestConfig::with_cases(48))]
-                #[test]
-                fn action_jacobians_match_finite_differences(a in algebra::<$G>($scale), p in $crate::testing::proptest::collection::vec(-2.0..2.0f64, $pdim)) {
-                    let p = <$P as $crate::Vector>::from_fn($pdim, |i| p[i]);
-                    check_action::<$G, $P>(&a, &p);
-                }
+            use $crate::testing::{algebra, check_action, check_cases};
+            #[test]
+            fn action_jacobians_match_finite_differences() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::action_jacobians_match_finite_differences"
+                    ),
+                    file!(),
+                    48,
+                    &(
+                        algebra::<$G>($scale),
+                        $crate::testing::proptest::collection::vec(-2.0..2.0f64, $pdim),
+                    ),
+                    &|(a, p)| {
+                        let p = <$P as $crate::Vector>::from_fn($pdim, |i| p[i]);
+                        check_action::<$G, $P>(&a, &p);
+                    },
+                );
             }
         }
     };
 }
 
-/// Instantiates the τ-map checks: `tau_suite!(module, Group, TauType, scale)`.
+/// Instantiates the τ-map checks: `tau_suite!(module, Group, TauType, scale)`. The runners are
+/// those of the group's other suites where the strategies agree (two algebra elements are not
+/// three: one more runner per group, shared by every τ map on it).
 #[macro_export]
 macro_rules! tau_suite {
     ($name:ident, $G:ty, $T:ty, $scale:expr) => {
         mod $name {
             #[allow(unused_imports)]
             use super::*;
-            use $crate::testing::proptest::prelude::*;
-            use $crate::testing::{algebra, check_invertible_radius, check_tau};
-            $crate::testing::proptest::proptest! {
-                #![proptest_config(ProptestConfig::with_cases(48))]
-                #[test]
-                fn tau_inverts_and_tangents_match_finite_differences(a in algebra::<$G>($scale), mu in algebra::<$G>(1.0)) {
-                    check_tau::<$G, $T>(&a, &mu);
-                }
-                #[test]
-                fn tau_round_trips_inside_its_invertible_radius(dir in algebra::<$G>(1.0), u in 0.0..=1.0f64) {
-                    check_invertible_radius::<$G, $T>(&dir, u);
-                }
+            use $crate::testing::{algebra, check_cases, check_invertible_radius, check_tau};
+            #[test]
+            fn tau_inverts_and_tangents_match_finite_differences() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::tau_inverts_and_tangents_match_finite_differences"
+                    ),
+                    file!(),
+                    48,
+                    &(algebra::<$G>($scale), algebra::<$G>(1.0)),
+                    &|(a, mu)| check_tau::<$G, $T>(&a, &mu),
+                );
+            }
+            #[test]
+            fn tau_round_trips_inside_its_invertible_radius() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::tau_round_trips_inside_its_invertible_radius"
+                    ),
+                    file!(),
+                    48,
+                    &(algebra::<$G>(1.0), 0.0..=1.0f64),
+                    &|(dir, u)| check_invertible_radius::<$G, $T>(&dir, u),
+                );
             }
         }
     };
@@ -858,14 +950,16 @@ macro_rules! cayley_group_suite {
         mod $name {
             #[allow(unused_imports)]
             use super::*;
-            use $crate::testing::proptest::prelude::*;
-            use $crate::testing::{algebra, check_cayley_closed_forms};
-            $crate::testing::proptest::proptest! {
-                #![proptest_config(ProptestConfig::with_cases(48))]
-                #[test]
-                fn closed_forms_match_generic_matrix_path(a in algebra::<$G>($scale)) {
-                    check_cayley_closed_forms::<$G>(&a);
-                }
+            use $crate::testing::{algebra, check_cases, check_cayley_closed_forms};
+            #[test]
+            fn closed_forms_match_generic_matrix_path() {
+                check_cases(
+                    concat!(module_path!(), "::closed_forms_match_generic_matrix_path"),
+                    file!(),
+                    48,
+                    &algebra::<$G>($scale),
+                    &|a| check_cayley_closed_forms::<$G>(&a),
+                );
             }
         }
     };

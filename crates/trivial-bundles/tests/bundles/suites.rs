@@ -48,31 +48,78 @@ macro_rules! bundle_suite {
     ($name:ident, $B:ty, $scale:expr, $cases:expr) => {
         mod $name {
             use super::*;
-            use lie_groups::testing::algebra;
-            use proptest::prelude::*;
+            use lie_groups::testing::{algebra, check_cases};
             type B = $B;
-            proptest! {
-                #![proptest_config(ProptestConfig::with_cases($cases))]
-                #[test]
-                fn group_axioms_hold(a in algebra::<B>($scale), b in algebra::<B>($scale), c in algebra::<B>($scale)) {
-                    check_group_axioms::<B>(&a, &b, &c);
-                }
-                #[test]
-                fn exp_log_round_trip_and_match_block_matrix_series(a in algebra::<B>($scale)) {
-                    check_exp_log::<B>(&a);
-                }
-                #[test]
-                fn adjoint_is_block_conjugation_and_ad_is_block_commutator(a in algebra::<B>($scale), b in algebra::<B>($scale), c in algebra::<B>($scale)) {
-                    check_adjoint::<B>(&a, &b, &c);
-                }
-                #[test]
-                fn dexp_matches_finite_differences_and_inverts(a in algebra::<B>($scale)) {
-                    check_dexp::<B>(&a);
-                }
-                #[test]
-                fn applied_maps_match_block_operators(a in algebra::<B>($scale), b in algebra::<B>($scale), c in algebra::<B>($scale)) {
-                    check_bundle_overrides::<B>(&a, &b, &c);
-                }
+            #[test]
+            fn group_axioms_hold() {
+                check_cases(
+                    concat!(module_path!(), "::group_axioms_hold"),
+                    file!(),
+                    $cases,
+                    &(
+                        algebra::<B>($scale),
+                        algebra::<B>($scale),
+                        algebra::<B>($scale),
+                    ),
+                    &|(a, b, c)| check_group_axioms::<B>(&a, &b, &c),
+                );
+            }
+            #[test]
+            fn exp_log_round_trip_and_match_block_matrix_series() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::exp_log_round_trip_and_match_block_matrix_series"
+                    ),
+                    file!(),
+                    $cases,
+                    &algebra::<B>($scale),
+                    &|a| check_exp_log::<B>(&a),
+                );
+            }
+            #[test]
+            fn adjoint_is_block_conjugation_and_ad_is_block_commutator() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::adjoint_is_block_conjugation_and_ad_is_block_commutator"
+                    ),
+                    file!(),
+                    $cases,
+                    &(
+                        algebra::<B>($scale),
+                        algebra::<B>($scale),
+                        algebra::<B>($scale),
+                    ),
+                    &|(a, b, c)| check_adjoint::<B>(&a, &b, &c),
+                );
+            }
+            #[test]
+            fn dexp_matches_finite_differences_and_inverts() {
+                check_cases(
+                    concat!(
+                        module_path!(),
+                        "::dexp_matches_finite_differences_and_inverts"
+                    ),
+                    file!(),
+                    $cases,
+                    &algebra::<B>($scale),
+                    &|a| check_dexp::<B>(&a),
+                );
+            }
+            #[test]
+            fn applied_maps_match_block_operators() {
+                check_cases(
+                    concat!(module_path!(), "::applied_maps_match_block_operators"),
+                    file!(),
+                    $cases,
+                    &(
+                        algebra::<B>($scale),
+                        algebra::<B>($scale),
+                        algebra::<B>($scale),
+                    ),
+                    &|(a, b, c)| check_bundle_overrides::<B>(&a, &b, &c),
+                );
             }
         }
     };
