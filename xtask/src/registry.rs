@@ -836,11 +836,15 @@ pub fn all() -> Vec<Generator> {
         ),
         Generator {
             name: "trade-eccentric-orbit",
-            about: "a vehicle scene's trade on its automatic ladder",
-            takes: "3 min",
+            about: "a vehicle scene's trade on its automatic ladder of ratio √2 (twice the points: the reversible runs' ε rungs are the ladder's)",
+            takes: "6 min",
             how: How::Trade(Trade {
                 csv: "docs/trade-eccentric-orbit.csv",
-                args: &["examples/scenes/eccentric-orbit.toml"],
+                args: &[
+                    "examples/scenes/eccentric-orbit.toml",
+                    "--ratio",
+                    "1.4142135623730951",
+                ],
                 metric: "error",
                 targets: ERROR_TARGETS,
                 parts: &[
