@@ -185,10 +185,13 @@ pub struct Solution<A, E> {
 /// no longer contract have reached the residual's own noise, which no iteration can reduce —
 /// rounding, or an approximate derivative inside the residual (Euler–Poincaré's field applies
 /// ∂²h/∂μ², a finite-difference Hessian unless the system gives its closed form, ~1e-10
-/// relative) — accepted below √ε of the state. An unknown of the size of its data and state passes zeros (Lie–Poisson's η = hξ); an
-/// increment that may vanish while its residual still rounds at the data's size passes them
-/// (Euler–Poincaré's ξ̄ − ξ_k), without which an increment of 1e-20 against a residual rounded at
-/// 1e-18 could never be certified.
+/// relative) — accepted below √ε of the state. An increment that may vanish while its residual
+/// still rounds at the data's size passes both (Euler–Poincaré's ξ̄ − ξ_k), without which an
+/// increment of 1e-20 against a residual rounded at 1e-18 could never be certified; an unknown
+/// whose residual rounds above ε‖ξ‖ passes its data (Lie–Poisson's η = hξ, whose residual
+/// carries the Hessian's scale: on a thin rod of inertia ratio 10⁶ its rounding, amplified by
+/// J⁻¹, is above the default tolerance, and the iteration cycled between two floats into
+/// NoConvergence).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)] // each an independent input: config, h (named by errors), the data's size, guess, warm matrix and prior, the two callbacks
 pub fn solve<G: LieGroup, E>(
@@ -331,9 +334,11 @@ pub fn solve<G: LieGroup, E>(
     })
 }
 
-/// What an unknown's residual is measured against where the unknown may be far smaller than the
-/// data it is computed from and the state it is added to (Euler–Poincaré's increment
-/// δ = ξ̄ − ξ_k); zero for an unknown of the size of both (Lie–Poisson's η = hξ). See [`solve`].
+/// What an unknown's residual is measured against where its rounding may be far above ε times
+/// the unknown: the data it is computed from (Euler–Poincaré's increment δ = ξ̄ − ξ_k, which
+/// may vanish; Lie–Poisson's η = hξ, whose residual is formed through the Hessian
+/// ∂²h/∂μ²) and the state it is added to (Euler–Poincaré's ξ_k); zero where the unknown is of
+/// the size of both. See [`solve`].
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Scales {
     /// The size of the data the residual is formed from: its rounding, 8ε·data, is a floor of
@@ -499,6 +504,52 @@ mod tests {
         ));
         let solution = run(1e-2).expect("certified against the scale");
         assert!((solution.xi - target).amax() <= 2.0 * delta);
+    }
+
+    /// The floor 8ε·data accepts a cycle only within it: r(ξ) = k(ξ − ξ*) with J = I sends
+    /// ξ* + a to ξ* − (k − 1)a, a two-float cycle for k = 2 (the Lie–Poisson step on a thin rod
+    /// ends in one, of 1.35e-14 ‖ξ‖, from its residual's rounding amplified by J⁻¹) and a
+    /// diverging iteration for k = 3. From a = 2⁻³⁰, far above the floor of data 10³
+    /// (8ε·10³ = 1.8e-12), both end in NoConvergence, for every kind (the chord refreshed at
+    /// every iteration does not help: J = I is wrong); the cycle is accepted against data 10⁷
+    /// (floor 1.8e-8), within 2a of ξ*.
+    #[test]
+    fn a_cycle_is_accepted_only_within_the_rounding_floor_of_its_data() {
+        let target = Vector3::new(1.0, -2.0, 0.5);
+        let a = 2f64.powi(-30);
+        let run = |kind: SolverKind, k: f64, data: f64| {
+            let config = SolverConfig {
+                kind,
+                ..SolverConfig::default()
+            };
+            solve::<So3, ()>(
+                &config,
+                0.1,
+                || Scales { data, state: 0.0 },
+                target + Vector3::repeat(a),
+                &mut None,
+                None,
+                |xi: &Vector3<f64>| ((xi - target) * k, ()),
+                |_, _| Matrix3::identity(),
+            )
+        };
+        for kind in [
+            SolverKind::FixedPoint,
+            SolverKind::Newton,
+            SolverKind::SimplifiedNewton,
+        ] {
+            for k in [2.0, 3.0] {
+                assert!(
+                    matches!(
+                        run(kind, k, 1e3),
+                        Err(IntegratorError::NoConvergence { .. })
+                    ),
+                    "{kind:?}, k = {k}"
+                );
+            }
+            let solution = run(kind, 2.0, 1e7).unwrap_or_else(|e| panic!("{kind:?}: {e}"));
+            assert!((solution.xi - target).amax() <= 2.0 * a, "{kind:?}");
+        }
     }
 
     /// The error estimate ρ/(1−ρ)‖Δξ‖ bounds what a slowly contracting iteration leaves: for
