@@ -381,7 +381,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         if self.system.is_forced() {
             impulse += self.system.external_force(t, g, &v).norm_max();
         }
-        let scaled_hessian = h.abs() * self.system.hessian(&self.mu).norm_max();
+        let scaled_hessian = h.abs() * self.system.hessian_norm(&self.mu);
         Scales {
             data: xi * (1.0 + scaled_hessian * self.mu.norm_max())
                 + scaled_hessian * h.abs() * impulse,
