@@ -357,18 +357,17 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         Ok(solution)
     }
 
-    /// What the rounding of the residual `r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ))` is measured against
-    /// ([`Scales`]), at (g_k, μ_k): `data = ‖ξ‖ (1 + s) + |h|² ‖∂²h/∂μ²‖ (‖F‖ + ‖F_ext‖)` with
-    /// the stiffness `s = |h| ‖∂²h/∂μ²‖ ‖μ_k‖`, ‖ξ‖ ≈ |h| ‖∂h/∂μ(μ_k)‖ and max norms (`state`
-    /// is zero: ξ is not added to a larger state). The residual's terms are ξ and
-    /// h ∂h/∂μ(μ̄), with μ̄ = μ_k + O(‖ξ‖ ‖μ_k‖) + the impulse h(F + F_ext): the part of μ̄
-    /// beyond μ_k is rounded at ε(‖ξ‖ ‖μ_k‖ + |h| ‖F + F_ext‖), which the Hessian carries into
-    /// ξ. s is also the size of the Newton matrix's term `h ∂²h/∂μ² ∂μ̄/∂ξ`. Where s < 4 the
-    /// floor 8ε·data of [`solve`] is below the default tolerance 1e-14 ‖ξ‖ and changes
-    /// nothing; on the rod of inertia ratio 10⁶ (s ≈ 10³ at hω = 10⁻³: u₁ = 1/𝕀₁ = 10⁶ times
-    /// |Π|) the residual's rounding, amplified by J⁻¹, is above that tolerance, and an
-    /// iteration that can resolve ξ no further is accepted at the floor instead of cycling
-    /// between two floats into `NoConvergence` (`tests/methods/rod_separatrix.rs`).
+    /// How far the residual's rounding reaches into the updates ([`Scales::amplified`]), at
+    /// (g_k, μ_k): `‖ξ‖ (1 + s) + |h|² ‖∂²h/∂μ²‖ (‖F‖ + ‖F_ext‖)` with the stiffness
+    /// `s = |h| ‖∂²h/∂μ²‖ ‖μ_k‖`, ‖ξ‖ ≈ |h| ‖∂h/∂μ(μ_k)‖ and max norms (`data` and `state` are
+    /// zero: η = hξ is of the size of its data and not added to a larger state). The residual's
+    /// terms are ξ and h ∂h/∂μ(μ̄), with μ̄ = μ_k + O(‖ξ‖ ‖μ_k‖) + the impulse h(F + F_ext): the
+    /// part of μ̄ beyond μ_k is rounded at ε(‖ξ‖ ‖μ_k‖ + |h| ‖F + F_ext‖), which the Hessian
+    /// carries into ξ; s is also the size of the Newton matrix's term `h ∂²h/∂μ² ∂μ̄/∂ξ`. On the
+    /// rod of inertia ratio 10⁶ (s ≈ 10³ at hω = 10⁻³: u₁ = 1/𝕀₁ = 10⁶ times |Π|) that
+    /// rounding, amplified by J⁻¹, is above the default tolerance 1e-14 ‖ξ‖, and an iteration
+    /// that can resolve ξ no further stops on its cycle instead of running into `NoConvergence`
+    /// (`tests/methods/rod_separatrix.rs`); an iteration that still contracts never reads it.
     fn scales(&self, h: f64) -> Scales {
         let t = self.state.now();
         let g = self.state.g.as_ref();
@@ -383,9 +382,9 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         }
         let scaled_hessian = h.abs() * self.system.hessian_norm(&self.mu);
         Scales {
-            data: xi * (1.0 + scaled_hessian * self.mu.norm_max())
+            amplified: xi * (1.0 + scaled_hessian * self.mu.norm_max())
                 + scaled_hessian * h.abs() * impulse,
-            state: 0.0,
+            ..Scales::default()
         }
     }
 
