@@ -395,13 +395,13 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                         * (xn * xn
                             + self.data_size(self.state.now(), self.state.g.as_ref(), &self.xi)),
                     state: xn,
-                    amplified: 0.0,
                 }
             };
             let solution = solve::<G, _>(
                 &self.config,
                 h,
                 scales,
+                || 0.0,
                 guess,
                 &mut chord,
                 prior,

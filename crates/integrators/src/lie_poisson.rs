@@ -335,12 +335,12 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         // for WarmStart::record; a failed step drops it.
         let prior = self.warm.prior_contraction(h);
         let mut chord = core::mem::take(self.warm.chord(h));
-        // Formed only if a step does not meet its tolerance at once (see Self::scales).
-        let scales = || self.scales(h);
         let solution = solve::<G, _>(
             &self.config,
             h,
-            scales,
+            Scales::default,
+            // Formed only if the updates stop contracting short of the tolerance.
+            || self.amplified_rounding(h),
             guess,
             &mut chord,
             prior,
@@ -357,10 +357,10 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         Ok(solution)
     }
 
-    /// How far the residual's rounding reaches into the updates ([`Scales::amplified`]), at
+    /// How far the residual's rounding reaches into the updates ([`solve`]'s `amplified`), at
     /// (g_k, μ_k): `‖ξ‖ (1 + s) + |h|² ‖∂²h/∂μ²‖ (‖F‖ + ‖F_ext‖)` with the stiffness
-    /// `s = |h| ‖∂²h/∂μ²‖ ‖μ_k‖`, ‖ξ‖ ≈ |h| ‖∂h/∂μ(μ_k)‖ and max norms (`data` and `state` are
-    /// zero: η = hξ is of the size of its data and not added to a larger state). The residual's
+    /// `s = |h| ‖∂²h/∂μ²‖ ‖μ_k‖`, ‖ξ‖ ≈ |h| ‖∂h/∂μ(μ_k)‖ and max norms (the [`Scales`] are zero:
+    /// η = hξ is of the size of its data and not added to a larger state). The residual's
     /// terms are ξ and h ∂h/∂μ(μ̄), with μ̄ = μ_k + O(‖ξ‖ ‖μ_k‖) + the impulse h(F + F_ext): the
     /// part of μ̄ beyond μ_k is rounded at ε(‖ξ‖ ‖μ_k‖ + |h| ‖F + F_ext‖), which the Hessian
     /// carries into ξ; s is also the size of the Newton matrix's term `h ∂²h/∂μ² ∂μ̄/∂ξ`. On the
@@ -368,7 +368,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
     /// rounding, amplified by J⁻¹, is above the default tolerance 1e-14 ‖ξ‖, and an iteration
     /// that can resolve ξ no further stops on its cycle instead of running into `NoConvergence`
     /// (`tests/methods/rod_separatrix.rs`); an iteration that still contracts never reads it.
-    fn scales(&self, h: f64) -> Scales {
+    fn amplified_rounding(&self, h: f64) -> f64 {
         let t = self.state.now();
         let g = self.state.g.as_ref();
         let v = self.system.velocity(&self.mu);
@@ -381,11 +381,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             impulse += self.system.external_force(t, g, &v).norm_max();
         }
         let scaled_hessian = h.abs() * self.system.hessian_norm(&self.mu);
-        Scales {
-            amplified: xi * (1.0 + scaled_hessian * self.mu.norm_max())
-                + scaled_hessian * h.abs() * impulse,
-            ..Scales::default()
-        }
+        xi * (1.0 + scaled_hessian * self.mu.norm_max()) + scaled_hessian * h.abs() * impulse
     }
 
     /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ:

@@ -174,8 +174,8 @@ pub struct Solution<A, E> {
 /// `max(tolerance · ‖ξ‖_max, 8ε · scales.data)`, or when the update no longer changes ξ in
 /// floating point (Δξ = 0 or below half an ulp of ξ), where further iterations would repeat the
 /// last one, or when the updates stop contracting (‖Δξ_k‖ ≥ ‖Δξ_{k−1}‖, measured) below
-/// √ε · `scales.state`, or below 8ε · `scales.amplified`, where it returns the mean of its last
-/// two iterates.
+/// √ε · `scales.state`, or below 8ε · `amplified`, where it returns the mean of its last two
+/// iterates.
 ///
 /// `scales` gives, for an unknown that may be far smaller than its data (called at most once,
 /// and only by a step that does not stop on its tolerance at once), the size of the data the
@@ -191,19 +191,21 @@ pub struct Solution<A, E> {
 /// increment of 1e-20 against a residual rounded at 1e-18 could never be certified.
 ///
 /// An unknown whose updates the inverse matrix fills with the residual's rounding far above
-/// ε‖ξ‖ passes that size as `scales.amplified` (Lie–Poisson's η = hξ on a stiff Hessian: on a
+/// ε‖ξ‖ passes that size as `amplified` (Lie–Poisson's η = hξ on a stiff Hessian: on a
 /// thin rod of inertia ratio 10⁶ the updates cycle between two floats 1.35e-14 ‖ξ‖ apart, above
-/// the default tolerance). It is read only once the updates stop contracting, so an iteration
+/// the default tolerance; zero for an unknown without). It is called only once the updates stop
+/// contracting (at most once), so it costs nothing on the usual path, and an iteration
 /// that still contracts runs on to its tolerance however large that size is; a cycle within
 /// it straddles the solution, and the mean of its last two iterates is returned (on the rod,
 /// 2000 θ = ½ steps forward and back return 3.5× closer to the start than with the last
 /// iterate).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)] // each an independent input: config, h (named by errors), the data's size, guess, warm matrix and prior, the two callbacks
+#[allow(clippy::too_many_arguments)] // each an independent input: config, h (named by errors), the data's sizes, guess, warm matrix and prior, the two callbacks
 pub fn solve<G: LieGroup, E>(
     config: &SolverConfig,
     step: f64,
     scales: impl FnOnce() -> Scales,
+    amplified: impl FnOnce() -> f64,
     mut xi: G::Algebra,
     chord: &mut Option<G::Operator>,
     prior: Option<f64>,
@@ -212,6 +214,7 @@ pub fn solve<G: LieGroup, E>(
 ) -> Result<Solution<G::Algebra, E>, IntegratorError> {
     let n = G::dim();
     let mut scales = Lazy::new(scales);
+    let mut amplified = Lazy::new(amplified);
     let mut previous_update = f64::INFINITY;
     let mut contraction = 0.0f64;
     let mut bound = 0.0f64;
@@ -318,10 +321,10 @@ pub fn solve<G: LieGroup, E>(
             || error_estimate <= ROUNDING_UPDATES * f64::EPSILON * scales.get().data
             || (stalled && dn <= STALLED_NOISE * scales.get().state);
         // Updates that stop contracting within the residual's rounding as the inverse matrix
-        // amplifies it (`scales.amplified`) cycle about the solution between floats the residual
+        // amplifies it (`amplified`) cycle about the solution between floats the residual
         // cannot tell apart: the last two iterates straddle it, and their mean is returned.
         let cycling =
-            !converged && stalled && dn <= ROUNDING_UPDATES * f64::EPSILON * scales.get().amplified;
+            !converged && stalled && dn <= ROUNDING_UPDATES * f64::EPSILON * amplified.get();
         if cycling {
             xi = xi.axpy(0.5, &delta);
         }
@@ -361,31 +364,25 @@ pub struct Scales {
     /// The size of the state the solution is added to: updates that no longer contract are
     /// accepted below √ε · state.
     pub state: f64,
-    /// The size the residual's rounding can reach in the updates, through the inverse Newton
-    /// matrix, where that is far above ε times the unknown (Lie–Poisson's η = hξ on a stiff
-    /// Hessian, [`crate::LiePoisson`]): updates that no longer contract are accepted below
-    /// 8ε · amplified. Only a stalled iteration reads it, so a contracting one still runs on
-    /// to its tolerance.
-    pub amplified: f64,
 }
 
-/// [`Scales`] computed at their first use only (most steps stop on their tolerance before
-/// needing them).
-struct Lazy<F> {
+/// A value computed at its first use only ([`Scales`], the amplified rounding: most steps stop on
+/// their tolerance before needing them).
+struct Lazy<T, F> {
     f: Option<F>,
-    value: Scales,
+    value: T,
 }
 
-impl<F: FnOnce() -> Scales> Lazy<F> {
+impl<T: Copy + Default, F: FnOnce() -> T> Lazy<T, F> {
     #[inline(always)]
     fn new(f: F) -> Self {
         Self {
             f: Some(f),
-            value: Scales::default(),
+            value: T::default(),
         }
     }
     #[inline(always)]
-    fn get(&mut self) -> Scales {
+    fn get(&mut self) -> T {
         if let Some(f) = self.f.take() {
             self.value = f();
         }
@@ -429,6 +426,7 @@ mod tests {
             &config,
             0.1,
             Scales::default,
+            || 0.0,
             xi0,
             &mut None,
             None,
@@ -470,6 +468,7 @@ mod tests {
                 &config,
                 0.1,
                 Scales::default,
+                || 0.0,
                 target + Vector3::repeat(delta),
                 &mut None,
                 None,
@@ -509,8 +508,9 @@ mod tests {
                 0.1,
                 || Scales {
                     data: scale,
-                    ..Scales::default()
+                    state: 0.0,
                 },
+                || 0.0,
                 start,
                 &mut None,
                 None,
@@ -545,10 +545,8 @@ mod tests {
             solve::<So3, ()>(
                 &config,
                 0.1,
-                || Scales {
-                    amplified: data,
-                    ..Scales::default()
-                },
+                Scales::default,
+                || data,
                 target + Vector3::repeat(a),
                 &mut None,
                 None,
@@ -594,10 +592,8 @@ mod tests {
         let solution = solve::<So3, ()>(
             &config,
             0.1,
-            || Scales {
-                amplified: 1e7,
-                ..Scales::default()
-            },
+            Scales::default,
+            || 1e7,
             target + Vector3::repeat(2f64.powi(-30)),
             &mut None,
             None,
@@ -632,6 +628,7 @@ mod tests {
             &config,
             0.1,
             Scales::default,
+            || 0.0,
             Vector3::zeros(),
             &mut None,
             None,

@@ -718,7 +718,7 @@ fn sweep(specs: &[MethodSpec], fault: Fault) -> Tally {
 /// once h is below the kernel's limit: `crates/mechanics/tests/models/modified.rs`). On its
 /// separatrix the step equations' residual rounds, through h𝕀⁻¹ (u₁ = 10⁶) and J⁻¹, above
 /// the solver's relative tolerance: the Lie–Poisson step gives the solver that rounding's
-/// size (`integrators::solver::Scales::amplified`), within which an iteration whose updates
+/// size (`integrators::solver::solve`'s `amplified`), within which an iteration whose updates
 /// stop contracting is accepted, where Newton's iteration would otherwise cycle between two
 /// floats into `NoConvergence` (the modified Hamiltonian
 /// with τ = exp within its limit, plain Lie–Poisson at hω = 6.25e-3 … 3e-4:

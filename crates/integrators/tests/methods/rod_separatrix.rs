@@ -5,7 +5,7 @@
 //! hω = 10⁻³: the residual r(ξ) = ξ − h 𝕀⁻¹ μ̄(ξ) rounds at a few ulps of ξ, and the inverse
 //! Newton matrix amplifies that to updates of 1.35e-14 ‖ξ‖ (measured: a two-float cycle, at a
 //! residual of 8.7e-19 with ‖ξ‖ = 8.1e-4), above the tolerance 1e-14 ‖ξ‖. Without the
-//! residual's amplified rounding ([`integrators::solver::Scales`], the Lie–Poisson step's) the
+//! residual's amplified rounding (the Lie–Poisson step's, [`integrators::solver::solve`]) the
 //! iteration cycled into `NoConvergence` after 50 iterations, at step 293 (Cayley) and 674 (exp) at
 //! hω = 10⁻³, between steps 229 and 3617 at hω = 6.25e-3 … 3e-4.
 
@@ -65,7 +65,7 @@ fn lie_poisson_steps_along_the_rod_separatrix_at_round_off() {
 /// they come back within 1e-12 relative (measured 8.0e-13 and 8.4e-14, τ = Cayley). Where the
 /// iteration cycles the solver returns the mean of the cycle's two iterates: with the last
 /// iterate instead, 2.3e-12 at hω = 10⁻³. The size of the amplified rounding
-/// ([`integrators::solver::Scales::amplified`]) only decides whether a cycle is accepted: 16× it
+/// ([`integrators::solver::solve`]'s `amplified`) only decides whether a cycle is accepted: 16× it
 /// gives the same figures; 1/16 of it does not reach the cycle, and steps fail as before.
 #[test]
 fn the_rod_separatrix_is_retraced_by_the_symmetric_step() {
