@@ -117,6 +117,11 @@ impl<G: LieGroup> System<G> for EulerArnold<G> {
     fn hessian(&self, _mu: &G::Algebra) -> G::Operator {
         self.inertia_inv.clone()
     }
+    /// `‖𝕀⁻¹‖_max`, without the clone.
+    #[inline]
+    fn hessian_norm(&self, _mu: &G::Algebra) -> f64 {
+        self.inertia_inv.norm_max()
+    }
     /// `∂l/∂ξ = 𝕀ξ`.
     #[inline]
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra {

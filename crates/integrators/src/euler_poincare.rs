@@ -401,6 +401,7 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> Integrator for TangentLiftInteg
                 &self.config,
                 h,
                 scales,
+                || 0.0,
                 guess,
                 &mut chord,
                 prior,

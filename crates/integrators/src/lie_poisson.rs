@@ -339,6 +339,8 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
             &self.config,
             h,
             Scales::default,
+            // Formed only if the updates stop contracting short of the tolerance.
+            || self.amplified_rounding(h),
             guess,
             &mut chord,
             prior,
@@ -353,6 +355,33 @@ impl<G: LieGroup, M: LiftedMap<G>, S: System<G>> CotangentLiftIntegrator<G, M, S
         )?;
         *self.warm.chord(h) = chord;
         Ok(solution)
+    }
+
+    /// How far the residual's rounding reaches into the updates ([`solve`]'s `amplified`), at
+    /// (g_k, μ_k): `‖ξ‖ (1 + s) + |h|² ‖∂²h/∂μ²‖ (‖F‖ + ‖F_ext‖)` with the stiffness
+    /// `s = |h| ‖∂²h/∂μ²‖ ‖μ_k‖`, ‖ξ‖ ≈ |h| ‖∂h/∂μ(μ_k)‖ and max norms (the [`Scales`] are zero:
+    /// η = hξ is of the size of its data and not added to a larger state). The residual's
+    /// terms are ξ and h ∂h/∂μ(μ̄), with μ̄ = μ_k + O(‖ξ‖ ‖μ_k‖) + the impulse h(F + F_ext): the
+    /// part of μ̄ beyond μ_k is rounded at ε(‖ξ‖ ‖μ_k‖ + |h| ‖F + F_ext‖), which the Hessian
+    /// carries into ξ; s is also the size of the Newton matrix's term `h ∂²h/∂μ² ∂μ̄/∂ξ`. On the
+    /// rod of inertia ratio 10⁶ (s ≈ 10³ at hω = 10⁻³: u₁ = 1/𝕀₁ = 10⁶ times |Π|) that
+    /// rounding, amplified by J⁻¹, is above the default tolerance 1e-14 ‖ξ‖, and an iteration
+    /// that can resolve ξ no further stops on its cycle instead of running into `NoConvergence`
+    /// (`tests/methods/rod_separatrix.rs`); an iteration that still contracts never reads it.
+    fn amplified_rounding(&self, h: f64) -> f64 {
+        let t = self.state.now();
+        let g = self.state.g.as_ref();
+        let v = self.system.velocity(&self.mu);
+        let xi = h.abs() * v.norm_max();
+        let mut impulse = 0.0;
+        if let Some(f) = force(&self.system, g) {
+            impulse += f.norm_max();
+        }
+        if self.system.is_forced() {
+            impulse += self.system.external_force(t, g, &v).norm_max();
+        }
+        let scaled_hessian = h.abs() * self.system.hessian_norm(&self.mu);
+        xi * (1.0 + scaled_hessian * self.mu.norm_max()) + scaled_hessian * h.abs() * impulse
     }
 
     /// Jacobian of r(ξ) = ξ − h ∂h/∂μ(μ̄(ξ)) from the [`Self::evaluate`] of the same ξ:

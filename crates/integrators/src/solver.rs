@@ -174,7 +174,8 @@ pub struct Solution<A, E> {
 /// `max(tolerance · ‖ξ‖_max, 8ε · scales.data)`, or when the update no longer changes ξ in
 /// floating point (Δξ = 0 or below half an ulp of ξ), where further iterations would repeat the
 /// last one, or when the updates stop contracting (‖Δξ_k‖ ≥ ‖Δξ_{k−1}‖, measured) below
-/// √ε · `scales.state`.
+/// √ε · `scales.state`, or below 8ε · `amplified`, where it returns the mean of its last two
+/// iterates.
 ///
 /// `scales` gives, for an unknown that may be far smaller than its data (called at most once,
 /// and only by a step that does not stop on its tolerance at once), the size of the data the
@@ -185,16 +186,26 @@ pub struct Solution<A, E> {
 /// no longer contract have reached the residual's own noise, which no iteration can reduce —
 /// rounding, or an approximate derivative inside the residual (Euler–Poincaré's field applies
 /// ∂²h/∂μ², a finite-difference Hessian unless the system gives its closed form, ~1e-10
-/// relative) — accepted below √ε of the state. An unknown of the size of its data and state passes zeros (Lie–Poisson's η = hξ); an
-/// increment that may vanish while its residual still rounds at the data's size passes them
-/// (Euler–Poincaré's ξ̄ − ξ_k), without which an increment of 1e-20 against a residual rounded at
-/// 1e-18 could never be certified.
+/// relative) — accepted below √ε of the state. An increment that may vanish while its residual
+/// still rounds at the data's size passes both (Euler–Poincaré's ξ̄ − ξ_k), without which an
+/// increment of 1e-20 against a residual rounded at 1e-18 could never be certified.
+///
+/// An unknown whose updates the inverse matrix fills with the residual's rounding far above
+/// ε‖ξ‖ passes that size as `amplified` (Lie–Poisson's η = hξ on a stiff Hessian: on a
+/// thin rod of inertia ratio 10⁶ the updates cycle between two floats 1.35e-14 ‖ξ‖ apart, above
+/// the default tolerance; zero for an unknown without). It is called only once the updates stop
+/// contracting (at most once), so it costs nothing on the usual path, and an iteration
+/// that still contracts runs on to its tolerance however large that size is; a cycle within
+/// it straddles the solution, and the mean of its last two iterates is returned (on the rod,
+/// 2000 θ = ½ steps forward and back return 3.5× closer to the start than with the last
+/// iterate).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)] // each an independent input: config, h (named by errors), the data's size, guess, warm matrix and prior, the two callbacks
+#[allow(clippy::too_many_arguments)] // each an independent input: config, h (named by errors), the data's sizes, guess, warm matrix and prior, the two callbacks
 pub fn solve<G: LieGroup, E>(
     config: &SolverConfig,
     step: f64,
     scales: impl FnOnce() -> Scales,
+    amplified: impl FnOnce() -> f64,
     mut xi: G::Algebra,
     chord: &mut Option<G::Operator>,
     prior: Option<f64>,
@@ -203,6 +214,7 @@ pub fn solve<G: LieGroup, E>(
 ) -> Result<Solution<G::Algebra, E>, IntegratorError> {
     let n = G::dim();
     let mut scales = Lazy::new(scales);
+    let mut amplified = Lazy::new(amplified);
     let mut previous_update = f64::INFINITY;
     let mut contraction = 0.0f64;
     let mut bound = 0.0f64;
@@ -304,15 +316,23 @@ pub fn solve<G: LieGroup, E>(
         // accepted while that noise is below √ε of the state the solution is added to
         // (`scales.state`).
         let stalled = it > 1 && dn >= previous_update;
-        if unchanged
+        let converged = unchanged
             || error_estimate <= tolerance * xi.norm_max()
             || error_estimate <= ROUNDING_UPDATES * f64::EPSILON * scales.get().data
-            || (stalled && dn <= STALLED_NOISE * scales.get().state)
-        {
+            || (stalled && dn <= STALLED_NOISE * scales.get().state);
+        // Updates that stop contracting within the residual's rounding as the inverse matrix
+        // amplifies it (`amplified`) cycle about the solution between floats the residual
+        // cannot tell apart: the last two iterates straddle it, and their mean is returned.
+        let cycling =
+            !converged && stalled && dn <= ROUNDING_UPDATES * f64::EPSILON * amplified.get();
+        if cycling {
+            xi = xi.axpy(0.5, &delta);
+        }
+        if converged || cycling {
             return Ok(Solution {
                 xi,
                 iterations: it,
-                evaluation: unchanged.then_some(by_products),
+                evaluation: (unchanged && !cycling).then_some(by_products),
                 jacobians,
                 contraction: (it > 1).then_some(contraction),
                 contraction_bound: (it > 1).then_some(bound),
@@ -331,9 +351,11 @@ pub fn solve<G: LieGroup, E>(
     })
 }
 
-/// What an unknown's residual is measured against where the unknown may be far smaller than the
-/// data it is computed from and the state it is added to (Euler–Poincaré's increment
-/// δ = ξ̄ − ξ_k); zero for an unknown of the size of both (Lie–Poisson's η = hξ). See [`solve`].
+/// What an unknown's residual is measured against where its rounding may be far above ε times
+/// the unknown: the data it is computed from (Euler–Poincaré's increment δ = ξ̄ − ξ_k, which
+/// may vanish; Lie–Poisson's η = hξ, whose residual is formed through the Hessian
+/// ∂²h/∂μ²) and the state it is added to (Euler–Poincaré's ξ_k); zero where the unknown is of
+/// the size of both. See [`solve`].
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Scales {
     /// The size of the data the residual is formed from: its rounding, 8ε·data, is a floor of
@@ -344,23 +366,23 @@ pub struct Scales {
     pub state: f64,
 }
 
-/// [`Scales`] computed at their first use only (most steps stop on their tolerance before
-/// needing them).
-struct Lazy<F> {
+/// A value computed at its first use only ([`Scales`], the amplified rounding: most steps stop on
+/// their tolerance before needing them).
+struct Lazy<T, F> {
     f: Option<F>,
-    value: Scales,
+    value: T,
 }
 
-impl<F: FnOnce() -> Scales> Lazy<F> {
+impl<T: Copy + Default, F: FnOnce() -> T> Lazy<T, F> {
     #[inline(always)]
     fn new(f: F) -> Self {
         Self {
             f: Some(f),
-            value: Scales::default(),
+            value: T::default(),
         }
     }
     #[inline(always)]
-    fn get(&mut self) -> Scales {
+    fn get(&mut self) -> T {
         if let Some(f) = self.f.take() {
             self.value = f();
         }
@@ -404,6 +426,7 @@ mod tests {
             &config,
             0.1,
             Scales::default,
+            || 0.0,
             xi0,
             &mut None,
             None,
@@ -445,6 +468,7 @@ mod tests {
                 &config,
                 0.1,
                 Scales::default,
+                || 0.0,
                 target + Vector3::repeat(delta),
                 &mut None,
                 None,
@@ -486,6 +510,7 @@ mod tests {
                     data: scale,
                     state: 0.0,
                 },
+                || 0.0,
                 start,
                 &mut None,
                 None,
@@ -499,6 +524,89 @@ mod tests {
         ));
         let solution = run(1e-2).expect("certified against the scale");
         assert!((solution.xi - target).amax() <= 2.0 * delta);
+    }
+
+    /// The amplified rounding accepts a cycle only within it: r(ξ) = k(ξ − ξ*) with J = I sends
+    /// ξ* + a to ξ* − (k − 1)a, a two-float cycle for k = 2 (the Lie–Poisson step on a thin rod
+    /// ends in one, of 1.35e-14 ‖ξ‖, from its residual's rounding amplified by J⁻¹) and a
+    /// diverging iteration for k = 3. From a = 2⁻³⁰, far above the floor of amplified 10³
+    /// (8ε·10³ = 1.8e-12), both end in NoConvergence, for every kind (the chord refreshed at
+    /// every iteration does not help: J = I is wrong); the cycle is accepted against amplified
+    /// 10⁷ (floor 1.8e-8), and the mean of its two iterates is ξ* itself.
+    #[test]
+    fn a_cycle_is_accepted_only_within_the_rounding_floor_of_its_data() {
+        let target = Vector3::new(1.0, -2.0, 0.5);
+        let a = 2f64.powi(-30);
+        let run = |kind: SolverKind, k: f64, data: f64| {
+            let config = SolverConfig {
+                kind,
+                ..SolverConfig::default()
+            };
+            solve::<So3, ()>(
+                &config,
+                0.1,
+                Scales::default,
+                || data,
+                target + Vector3::repeat(a),
+                &mut None,
+                None,
+                |xi: &Vector3<f64>| ((xi - target) * k, ()),
+                |_, _| Matrix3::identity(),
+            )
+        };
+        for kind in [
+            SolverKind::FixedPoint,
+            SolverKind::Newton,
+            SolverKind::SimplifiedNewton,
+        ] {
+            for k in [2.0, 3.0] {
+                assert!(
+                    matches!(
+                        run(kind, k, 1e3),
+                        Err(IntegratorError::NoConvergence { .. })
+                    ),
+                    "{kind:?}, k = {k}"
+                );
+            }
+            let solution = run(kind, 2.0, 1e7).unwrap_or_else(|e| panic!("{kind:?}: {e}"));
+            assert!(
+                (solution.xi - target).amax() <= 4.0 * f64::EPSILON,
+                "{kind:?}: {:e}",
+                (solution.xi - target).amax()
+            );
+        }
+    }
+
+    /// The amplified rounding does not cut a contracting iteration short: r(ξ) = (ξ − ξ*)/2
+    /// (fixed point, contraction ½) from a = 2⁻³⁰ with amplified 10⁷ (8ε·10⁷ = 1.8e-8 > a) runs
+    /// on to the tolerance 1e-14 ‖ξ*‖. (Read as a floor of the error estimate, like `data`,
+    /// that size stopped the iteration at its first update, 4.7e-10 from ξ*: the gyrostat's
+    /// steps lost their reversibility that way.)
+    #[test]
+    fn a_contracting_iteration_runs_to_its_tolerance_whatever_its_amplified_rounding() {
+        let target = Vector3::new(1.0, -2.0, 0.5);
+        let config = SolverConfig {
+            kind: SolverKind::FixedPoint,
+            ..SolverConfig::default()
+        };
+        let solution = solve::<So3, ()>(
+            &config,
+            0.1,
+            Scales::default,
+            || 1e7,
+            target + Vector3::repeat(2f64.powi(-30)),
+            &mut None,
+            None,
+            |xi: &Vector3<f64>| ((xi - target) * 0.5, ()),
+            |_, _| Matrix3::identity(),
+        )
+        .unwrap();
+        let error = (solution.xi - target).amax();
+        assert!(
+            error <= 2e-14,
+            "{error:e} after {} iterations",
+            solution.iterations
+        );
     }
 
     /// The error estimate ρ/(1−ρ)‖Δξ‖ bounds what a slowly contracting iteration leaves: for
@@ -520,6 +628,7 @@ mod tests {
             &config,
             0.1,
             Scales::default,
+            || 0.0,
             Vector3::zeros(),
             &mut None,
             None,

@@ -56,6 +56,13 @@ pub trait System<G: LieGroup> {
     fn hessian(&self, mu: &G::Algebra) -> G::Operator {
         crate::derivative_check::finite_difference_hessian(self, mu)
     }
+    /// `‖∂²h/∂μ²‖_max` at μ, the Hessian's largest entry in absolute value: how much it scales
+    /// the rounding of a momentum (the Lie–Poisson step's solver measures its residual's rounding
+    /// with it). `self.hessian(mu).norm_max()` unless a system gives it without forming an
+    /// allocated operator (SO(n), products of bodies, gyrostats).
+    fn hessian_norm(&self, mu: &G::Algebra) -> f64 {
+        self.hessian(mu).norm_max()
+    }
     /// The Legendre map `ξ ↦ μ = ∂l/∂ξ`, the inverse of `μ ↦ ∂h/∂μ`.
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra;
     /// The coefficients a of a diagonal quadratic Hamiltonian `h(μ) = ½ Σ aᵢ μᵢ²`, where h is one

@@ -706,17 +706,6 @@ fn sweep(specs: &[MethodSpec], fault: Fault) -> Tally {
 /// Known defects the harness finds, still open, as (configuration, where) substrings of the
 /// finding; each must still show (a fix removes its line).
 ///
-/// On the rod's separatrix, run within its step limit (hω_m = 0.1, some 5800 steps to ωT = 2),
-/// the modified Hamiltonian with τ = exp (θ = 0 on the exact separatrix state, θ = ½ on the
-/// state 2 ulps off) fails after 5610 and 7159 steps: Newton's iteration ends in
-/// `NoConvergence` after 50 iterations with a residual of 1.6e-19 and 1.5e-19, at every scale.
-/// Plain Lie–Poisson (Cayley, θ = ½) on that state fails the same way at small steps (after
-/// 673, 229, 293 and 3617 steps at hω = 6.25e-3, 3.1e-3, 1e-3, 3e-4; kahan-li-8 around it
-/// from hω ≈ 6e-3 down to 8e-4). The cause is the solver's stopping rule
-/// (`integrators::solver::solve`), not these methods: the residual is at rounding level, but on
-/// the rod the rounding of ξ is set by u₁ε|Π| (u₁ = 10⁶) far above ε‖ξ‖, and the iteration
-/// neither meets its relative tolerance nor counts as stalled. Its fix belongs to the solver.
-///
 /// Fixed since the harness found them, on the rod of inertia ratio 10⁶ (𝕀 = (10⁻⁶, 1, 1)): hω
 /// with ω = |Ω| does not bound the Lie–Poisson kernel's error nor the modification of its
 /// Hamiltonian there. The kernel's h² term bends H along Π₁ by (hω_K)², ω_K ≈ |Ω₃|√(I₃/I₁)/√12,
@@ -726,11 +715,15 @@ fn sweep(specs: &[MethodSpec], fault: Fault) -> Tally {
 /// at hω = 0.1 by τ's domain or Newton, ‖ξ‖ ≈ 4e3) and is run within it; the kernel's rate
 /// enters the order bound (`MethodSpec::kernel_rate`), which kahan-li-8 ∘ lie-poisson missed
 /// by 0.90 to 0.93 where its bound with |Ω| was 1e-2 to 3.8e-2 (its error falls at order 8
-/// once h is below the kernel's limit: `crates/mechanics/tests/models/modified.rs`).
-const KNOWN: &[(&str, &str)] = &[(
-    "(rod, ratio 1e6), separatrix",
-    "no convergence after 50 iterations",
-)];
+/// once h is below the kernel's limit: `crates/mechanics/tests/models/modified.rs`). On its
+/// separatrix the step equations' residual rounds, through h𝕀⁻¹ (u₁ = 10⁶) and J⁻¹, above
+/// the solver's relative tolerance: the Lie–Poisson step gives the solver that rounding's
+/// size (`integrators::solver::solve`'s `amplified`), within which an iteration whose updates
+/// stop contracting is accepted, where Newton's iteration would otherwise cycle between two
+/// floats into `NoConvergence` (the modified Hamiltonian
+/// with τ = exp within its limit, plain Lie–Poisson at hω = 6.25e-3 … 3e-4:
+/// `crates/integrators/tests/methods/rod_separatrix.rs`).
+const KNOWN: &[(&str, &str)] = &[];
 
 #[test]
 fn every_method_on_every_model_holds_at_the_extremes() {

@@ -39,6 +39,9 @@ impl<G: LieGroup, S: System<G>, F: ExternalForce<G>> System<G> for Forced<S, F> 
     fn hessian(&self, mu: &G::Algebra) -> G::Operator {
         self.system.hessian(mu)
     }
+    fn hessian_norm(&self, mu: &G::Algebra) -> f64 {
+        self.system.hessian_norm(mu)
+    }
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra {
         self.system.momentum(xi)
     }

@@ -33,6 +33,7 @@ mod product_groups;
 mod reversible_steps;
 mod right_trivialized;
 mod robustness;
+mod rod_separatrix;
 mod splitting;
 mod time_exact;
 mod user_map;

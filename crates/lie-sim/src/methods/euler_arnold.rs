@@ -147,6 +147,9 @@ impl<G: LieGroup, S: integrators::System<G>> integrators::System<G> for EulerArn
     fn hessian(&self, mu: &G::Algebra) -> G::Operator {
         self.ea.hessian(mu)
     }
+    fn hessian_norm(&self, mu: &G::Algebra) -> f64 {
+        self.ea.hessian_norm(mu)
+    }
     fn momentum(&self, xi: &G::Algebra) -> G::Algebra {
         self.ea.momentum(xi)
     }

@@ -195,6 +195,10 @@ impl<S: System<Se3>, const N: usize> System<Power<Se3, N>> for CoupledBodies<S, 
             }
         })
     }
+    /// The largest of the bodies' (the Hessian is block-diagonal), without forming it.
+    fn hessian_norm(&self, mu: &PowerAlgebra<Se3, N>) -> f64 {
+        (0..N).fold(0.0, |m, k| m.max(self.bodies[k].hessian_norm(&mu.parts[k])))
+    }
     /// The bodies' Legendre maps.
     fn momentum(&self, xi: &PowerAlgebra<Se3, N>) -> PowerAlgebra<Se3, N> {
         PowerAlgebra::from_parts_fn(|k| self.bodies[k].momentum(&xi.parts[k]))

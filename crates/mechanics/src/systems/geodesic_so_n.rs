@@ -146,6 +146,10 @@ impl<const N: usize> System<SoN<N>> for GeneralizedRigidBody<N> {
             |a, b| if a == b { 1.0 / self.weights[a] } else { 0.0 },
         )
     }
+    /// `max_p 1/(jᵢ + jⱼ)`, without forming the dense d × d Hessian.
+    fn hessian_norm(&self, _mu: &Col<f64>) -> f64 {
+        self.weights.iter().fold(0.0, |m, w| m.max(1.0 / w))
+    }
     /// `M = JΩ̂ + Ω̂J`, `M_p = (jᵢ + jⱼ) Ω_p`.
     fn momentum(&self, xi: &Col<f64>) -> Col<f64> {
         Col::from_fn(xi.nrows(), |p| xi[p] * self.weights[p])

@@ -200,6 +200,14 @@ impl<const K: usize> System<GyrostatGroup<K>> for Gyrostat<K> {
             (false, false) => wheels[(i - 3, j - 3)],
         })
     }
+    /// The largest entry of the three blocks, without forming the matrix.
+    fn hessian_norm(&self, _mu: &GyrostatAlgebra<K>) -> f64 {
+        let s = self.body.hessian(&Vector3::zeros());
+        let sa = s * self.axes;
+        let wheels = self.axes.tr_mul(&sa)
+            + SMatrix::<f64, K, K>::from_diagonal(&self.wheel_inertia.map(|j| 1.0 / j));
+        s.amax().max(sa.amax()).max(wheels.amax())
+    }
     /// `(Π, p) = (𝕀Ω + AJφ̇, J(AᵀΩ + φ̇))`.
     fn momentum(&self, xi: &GyrostatAlgebra<K>) -> GyrostatAlgebra<K> {
         let jrates = xi.b.component_mul(&self.wheel_inertia);

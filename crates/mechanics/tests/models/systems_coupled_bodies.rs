@@ -449,3 +449,13 @@ fn three_bodies_converge_at_order_2_to_an_independent_rk4() {
         assert!((1.9..=2.1).contains(&order), "{name}: order {order}");
     }
 }
+
+/// The Hessian's size without the matrix is the matrix's largest entry.
+#[test]
+fn coupled_bodies_hessian_norm_is_the_hessians() {
+    use integrators::System;
+    let chain = three();
+    let mu =
+        PowerAlgebra::from_parts_fn(|k| Vector6::new(0.3, -1.0 + k as f64, 0.2, 0.5, 0.1, -0.4));
+    assert_eq!(chain.hessian_norm(&mu), chain.hessian(&mu).amax());
+}

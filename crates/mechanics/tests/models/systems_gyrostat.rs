@@ -376,3 +376,11 @@ fn three_wheel_gyrostat_converges_at_order_2_to_an_independent_rk4() {
         assert!((1.9..=2.1).contains(&order), "{name}: order {order}");
     }
 }
+
+/// The Hessian's size without the matrix is the matrix's largest entry.
+#[test]
+fn gyrostat_hessian_norm_is_the_hessians() {
+    let gyro = three_wheels();
+    let (mu, _) = three_wheel_state();
+    assert_eq!(gyro.hessian_norm(&mu), gyro.hessian(&mu).amax());
+}

@@ -289,3 +289,11 @@ fn so3_mass_matrix_reproduces_principal_moments() {
     let w = g.inertia_diagonal();
     assert!((w[0] - 2.5).abs() < 1e-15 && (w[1] - 2.0).abs() < 1e-15 && (w[2] - 1.0).abs() < 1e-15);
 }
+
+/// The Hessian's size without the dense d × d matrix is the matrix's largest entry.
+#[test]
+fn so_n_hessian_norm_is_the_hessians() {
+    let body = GeneralizedRigidBody::<4>::new(&[1.0, 2.0, 3.5, 0.7]).unwrap();
+    let mu = Col::from_fn(6, |p| 0.3 * p as f64 - 0.5);
+    assert_eq!(body.hessian_norm(&mu), body.hessian(&mu).norm_max());
+}
