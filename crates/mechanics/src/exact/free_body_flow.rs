@@ -100,6 +100,8 @@ const PHASE_LIMIT: f64 = 4_503_599_627_370_496.0;
 #[derive(Debug, Clone)]
 pub struct FreeBodyFlow {
     axes: Matrix3<f64>,
+    /// The principal frame is not the body frame (𝕀 is not diagonal).
+    turned: bool,
     moments: Vector3<f64>,
     axisymmetric: Option<AxisymmetricFlow>,
     separatrix: SeparatrixTest,
@@ -355,6 +357,20 @@ struct Elliptic {
     attitude: Option<Attitude>,
 }
 
+impl Elliptic {
+    /// The scaled canonical momentum q = (A₁ cn, σA₂ sn, A₃ dn) at the functions' values.
+    #[inline]
+    fn canonical(&self, jac: &Jacobi) -> Vector3<f64> {
+        let a = &self.amplitudes;
+        Vector3::new(a.x * jac.cn, a.y * jac.sn, a.z * jac.dn)
+    }
+
+    /// Π = 2ᵉ P q at the phase u, as [`FreeBodyFlow::evaluate`] forms it.
+    fn momentum(&self, phase: QuarterPhase) -> Vector3<f64> {
+        self.pmat * self.canonical(&self.modulus.jacobi(phase)) * self.scale
+    }
+}
+
 /// The constants of a generic elliptic orbit of the free rigid body with its attitude
 /// ([`FreeBodyFlow::elliptic_orbit`]), in the notation of [`FreeBodyFlow`]: at time t, with
 /// τ = 2ᵉt and u = u₀ + λτ = nK + w,
@@ -453,6 +469,7 @@ impl FreeBodyFlow {
         ];
         Self {
             axes: *axes,
+            turned: *axes != Matrix3::identity(),
             moments: *moments,
             axisymmetric: AxisymmetricFlow::new(body).ok(),
             separatrix,
@@ -476,12 +493,15 @@ impl FreeBodyFlow {
         }
         let orbit = self.orbit(pi, r, false)?;
         let (mut pi_t, r_t) = self.evaluate(&orbit, t)?;
-        if t != 0.0 && matches!(orbit.kind, OrbitKind::Elliptic(_)) {
-            // Π(t) = A p(t) with p = Aᵀ Π in the principal frame A; A is orthogonal only to
-            // round-off, so at t → 0 this is (AAᵀ)Π, the same fixed scaling at every call: a drift
-            // of |Π| and h linear in the number of calls. Adding Π − A(AᵀΠ) cancels it, so only the
-            // roundings of this call remain.
-            pi_t += pi - self.axes * self.axes.tr_mul(pi);
+        if let (true, OrbitKind::Elliptic(ell)) = (self.turned && t != 0.0, &orbit.kind) {
+            // On a turned body Π(t) = A p(t), p(t) from the orbit through p = AᵀΠ in the
+            // principal frame A. Restarted at every call (as a kinetic–kick splitting calls it),
+            // the orbit's own start A p(0) — off Π by A's departure from orthonormality and by
+            // the roundings of the orbit's constants, the same way at every call — would enter
+            // each result and drift (|Π|² by ~0.02 ulp a call). Only the increment is taken:
+            // Π(t) = Π + A p(t) − A p(0). A diagonal 𝕀 (A = I) takes p(t) itself, which does
+            // not drift.
+            pi_t += pi - ell.momentum(ell.phase0);
         }
         Ok((pi_t, r_t))
     }
@@ -701,8 +721,7 @@ impl FreeBodyFlow {
         let du = ell.lambda * tau;
         let phase = ell.modulus.advance(ell.phase0, du);
         let jac = ell.modulus.jacobi(phase);
-        let a = &ell.amplitudes;
-        let qt = Vector3::new(a.x * jac.cn, a.y * jac.sn, a.z * jac.dn);
+        let qt = ell.canonical(&jac);
         let pi_t = ell.pmat * qt * ell.scale;
         if !pi_t.iter().all(|x| x.is_finite()) {
             return Err(IntegratorError::NonFinite {
@@ -725,7 +744,8 @@ impl FreeBodyFlow {
             d_lambda += dn * lk;
         }
         let d_g = (dn * FRAC_PI_2 + (att.atan(phase, &jac) - att.atan0)) / att.sb;
-        let dpsi = att.norm * tau / att.i3 + att.factor * (att.norm * d_lambda - a.z * d_g);
+        let dpsi =
+            att.norm * tau / att.i3 + att.factor * (att.norm * d_lambda - ell.amplitudes.z * d_g);
         let bt = ell.pmat * minimal_rotation(&(qt * att.inv_norm));
         let (sin, cos) = dpsi.sin_cos();
         let s = &att.start;
