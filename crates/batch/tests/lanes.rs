@@ -105,6 +105,21 @@ fn a_body_has_the_same_bits_in_every_lane_size_level_and_thread_count() {
     same_bits_everywhere(ExactFlow::new(free).unwrap(), "exact");
 }
 
+/// A Strang body keeps its bits next to bodies whose steps turn them by any angle: |Π| from 10⁻³
+/// to 200 side by side (turns and Rodrigues half angles within the short kernels' range, within
+/// π/4, and beyond it: the reduction and the general Rodrigues path), free and in a field.
+#[test]
+fn a_strang_body_has_the_same_bits_next_to_bodies_turning_by_any_angle() {
+    let radii = [1.5, 20.0, 200.0, 1e-3, 5.0];
+    let states: Vec<_> = (0..1000u64)
+        .map(|i| state(radii[i as usize % radii.len()], 5, i))
+        .collect();
+    let free = BodyModel::free(&bodies()[0]).unwrap();
+    let field = BodyModel::heavy_top(&tops()[1]).unwrap();
+    same_bits_for(Strang::new(free), "Strang free, any angle", states.clone());
+    same_bits_for(Strang::new(field), "Strang field, any angle", states);
+}
+
 /// The batched exact flow's bodies of every kind side by side — generic orbits (the lanes),
 /// bodies at rest, steady rotations about an axis, states on the separatrix in exact arithmetic
 /// (k' = 0: the scalar path), an ulp off it and near it — keep their bits whatever their lane,
