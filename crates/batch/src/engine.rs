@@ -79,6 +79,11 @@ pub trait Kernel: Sync + Send + Clone {
     fn select<S: Simd>(m: M<S>, a: &Self::State<S>, b: &Self::State<S>) -> Self::State<S>;
     /// Lanes whose state is finite.
     fn finite<S: Simd>(&self, st: &Self::State<S>) -> M<S>;
+    /// Whether a lane whose state is not finite after a step is not finite after any later
+    /// step either, whatever the step sizes (a non-finite entry stays, or spreads, and never
+    /// rounds back to a finite one). The step loop then checks the lanes once per call instead
+    /// of after every step (the engine's page, *Failures*). False unless the kernel proves it.
+    const NON_FINITE_PERSISTS: bool = false;
     /// The published momentum Π and attitude R (row-major) of the state.
     fn published<S: Simd>(&self, st: &Self::State<S>) -> ([F<S>; 3], [F<S>; 9]);
     /// The energy and, where the system has one, the Casimir |Π|² of the published state.
@@ -156,62 +161,140 @@ pub struct Schedule<'a> {
     pub clock_before: Clock,
 }
 
-/// Runs `schedule` on one block of groups.
+/// Runs `schedule` on one block of groups: each vector of lanes in one pass without a
+/// finiteness check per step where the kernel allows it ([`Kernel::NON_FINITE_PERSISTS`]) and
+/// no running lane failed, else in the checked pass.
 #[inline(always)]
 fn run_block<S: Simd, K: Kernel>(s: S, kernel: &K, block: &mut [f64], sch: &Schedule<'_>) {
     let w = S::F64_LANES;
     let glen = group_len::<K>();
-    let c = K::COMPONENTS;
-    let one = F::splat(s, 1.0);
     for group in block.chunks_exact_mut(glen) {
         for off in (0..GROUP).step_by(w) {
-            // The time before each step, on the scalar integrators' clock.
-            let mut clock = sch.clock_before;
-            let mut st = kernel.load(s, group, off);
-            for k in 0..sch.steps {
-                let outer = sch.outer_before + k + 1;
-                let monitor = sch.monitor_every.is_some_and(|m| outer.is_multiple_of(m));
-                let alive = F::load(s, &group[(c + Book::Alive as usize) * GROUP + off..]).eq(one);
-                let mut new = st;
-                let inner0 = sch.inner_before + k * sch.subs.len() as u64;
-                let every = kernel.renormalize_every();
-                let renorms = kernel.renormalizes();
-                if let [h] = sch.subs {
-                    // One sub-step (no composition): straight-line code.
-                    let renorm = renorms && (inner0 + 1).is_multiple_of(every);
-                    kernel.step(&mut new, group, off, *h, renorm);
-                } else {
-                    for (j, &hs) in sch.subs.iter().enumerate() {
-                        let renorm = renorms && (inner0 + j as u64 + 1).is_multiple_of(every);
-                        kernel.step(&mut new, group, off, hs, renorm);
-                    }
-                }
-                let ok = kernel.finite(&new).and(alive);
-                // Every lane stepped (the usual case): the new state as it is, without the
-                // blend that keeps a failed or stopped lane's old state; the same bits.
-                let all = !ok.not().any();
-                if !all {
-                    new = K::select(ok, &new, &st);
-                }
-                st = new;
-                if !all {
-                    let failed = alive.and(ok.not());
-                    if failed.any() {
-                        record_failure(s, failed, group, c, off, outer - 1, clock.now());
-                    }
-                }
-                if monitor {
-                    if all {
-                        monitor_all(s, kernel, &st, group, off);
-                    } else {
-                        monitor_lanes(s, kernel, &st, ok, group, off);
-                    }
-                }
-                clock.advance(sch.h);
+            if !(K::NON_FINITE_PERSISTS && run_unchecked(s, kernel, group, off, sch)) {
+                run_checked(s, kernel, group, off, sch);
             }
-            kernel.store(&st, group, off);
         }
     }
+}
+
+/// The steps of `sch` on one vector of lanes, sub-step by sub-step.
+#[inline(always)]
+fn step_all_subs<S: Simd, K: Kernel>(
+    kernel: &K,
+    st: &mut K::State<S>,
+    group: &[f64],
+    off: usize,
+    sch: &Schedule<'_>,
+    k: u64,
+) {
+    let inner0 = sch.inner_before + k * sch.subs.len() as u64;
+    let every = kernel.renormalize_every();
+    let renorms = kernel.renormalizes();
+    if let [h] = sch.subs {
+        // One sub-step (no composition): straight-line code.
+        let renorm = renorms && (inner0 + 1).is_multiple_of(every);
+        kernel.step(st, group, off, *h, renorm);
+    } else {
+        for (j, &hs) in sch.subs.iter().enumerate() {
+            let renorm = renorms && (inner0 + j as u64 + 1).is_multiple_of(every);
+            kernel.step(st, group, off, hs, renorm);
+        }
+    }
+}
+
+/// Whether step `k` of the call is monitored.
+#[inline(always)]
+fn monitored(sch: &Schedule<'_>, k: u64) -> bool {
+    let outer = sch.outer_before + k + 1;
+    sch.monitor_every.is_some_and(|m| outer.is_multiple_of(m))
+}
+
+/// The steps of `sch` on one vector of lanes with one finiteness check after the last: a lane
+/// whose state turned non-finite at some step is still non-finite there
+/// ([`Kernel::NON_FINITE_PERSISTS`]). Stopped lanes step along and take back their stored state
+/// at the end. When every running lane is finite at the end, stores the state and returns true:
+/// no running lane failed at any step, so each step's result is what [`run_checked`] computes
+/// (the same arithmetic, no blend). Otherwise leaves the group as it was (the state is stored
+/// only here, the monitor's maxima are put back) and returns false, for [`run_checked`] to run
+/// the call again and find the step where each lane failed.
+#[inline(always)]
+fn run_unchecked<S: Simd, K: Kernel>(
+    s: S,
+    kernel: &K,
+    group: &mut [f64],
+    off: usize,
+    sch: &Schedule<'_>,
+) -> bool {
+    let c = K::COMPONENTS;
+    let alive = F::load(s, &group[(c + Book::Alive as usize) * GROUP + off..]).eq(F::splat(s, 1.0));
+    let all = !alive.not().any();
+    let maxima: [F<S>; 2] = load_n(s, group, c + Book::De as usize, off);
+    let mut st = kernel.load(s, group, off);
+    for k in 0..sch.steps {
+        step_all_subs(kernel, &mut st, group, off, sch, k);
+        if monitored(sch, k) {
+            if all {
+                monitor_all(s, kernel, &st, group, off);
+            } else {
+                monitor_lanes(s, kernel, &st, alive, group, off);
+            }
+        }
+    }
+    let failed = alive.and(kernel.finite(&st).not());
+    if failed.any() {
+        store_n(&maxima, group, c + Book::De as usize, off);
+        return false;
+    }
+    if !all {
+        st = K::select(alive, &st, &kernel.load(s, group, off));
+    }
+    kernel.store(&st, group, off);
+    true
+}
+
+/// The steps of `sch` on one vector of lanes, each lane checked after every step: a lane that
+/// turns non-finite keeps its last finite state and records the step and time of its failure.
+#[inline(always)]
+fn run_checked<S: Simd, K: Kernel>(
+    s: S,
+    kernel: &K,
+    group: &mut [f64],
+    off: usize,
+    sch: &Schedule<'_>,
+) {
+    let c = K::COMPONENTS;
+    let one = F::splat(s, 1.0);
+    // The time before each step, on the scalar integrators' clock.
+    let mut clock = sch.clock_before;
+    let mut st = kernel.load(s, group, off);
+    for k in 0..sch.steps {
+        let alive = F::load(s, &group[(c + Book::Alive as usize) * GROUP + off..]).eq(one);
+        let mut new = st;
+        step_all_subs(kernel, &mut new, group, off, sch, k);
+        let ok = kernel.finite(&new).and(alive);
+        // Every lane stepped (the usual case): the new state as it is, without the
+        // blend that keeps a failed or stopped lane's old state; the same bits.
+        let all = !ok.not().any();
+        if !all {
+            new = K::select(ok, &new, &st);
+        }
+        st = new;
+        if !all {
+            let failed = alive.and(ok.not());
+            if failed.any() {
+                record_failure(s, failed, group, c, off, sch.outer_before + k, clock.now());
+            }
+        }
+        if monitored(sch, k) {
+            if all {
+                monitor_all(s, kernel, &st, group, off);
+            } else {
+                monitor_lanes(s, kernel, &st, ok, group, off);
+            }
+        }
+        clock.advance(sch.h);
+    }
+    kernel.store(&st, group, off);
 }
 
 #[cold]

@@ -161,6 +161,11 @@ impl<S: Simd> M<S> {
     pub fn any(self) -> bool {
         self.s.first_true_m64s(self.m) < S::F64_LANES
     }
+    /// Whether every lane is set.
+    #[inline(always)]
+    pub fn all(self) -> bool {
+        !self.not().any()
+    }
     /// Lane-wise and.
     #[inline(always)]
     pub fn and(self, b: Self) -> Self {

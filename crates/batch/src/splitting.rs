@@ -252,6 +252,18 @@ impl Strang {
 
 impl Kernel for Strang {
     const COMPONENTS: usize = 13;
+    /// True: every flow of the step maps a state with a non-finite entry of Π or R to one with
+    /// a non-finite entry (IEEE arithmetic: ∞ · 0, ∞ − ∞ and every operation on a NaN are NaN,
+    /// ∞ plus a finite number is ∞).
+    /// - A turn about axis i leaves Πᵢ and column i of R as they are, and rotates each other
+    ///   pair `(u, v)` (of Π, or of a row of R) into `(c u + s v, c v − s u)` with (s, c) finite
+    ///   and not both zero, or both NaN (a non-finite angle: `trig::sin_cos` gives NaN beyond
+    ///   its range): a non-finite u or v gives a non-finite result.
+    /// - `R ← R M` (Rodrigues, the Newton–Schulz step) sums in entry (r, j) every entry (r, m)
+    ///   times M's entry (m, j): a non-finite entry of row r makes the whole row non-finite
+    ///   (times a zero it is NaN); Π is left as it is.
+    /// - The kick `Π ← Π + t F(R)` leaves R as it is, and a non-finite Πᵢ stays non-finite.
+    const NON_FINITE_PERSISTS: bool = true;
     type State<S: Simd> = StrangState<S>;
 
     fn name(&self) -> String {
@@ -397,6 +409,7 @@ pub(crate) fn finite_all<S: Simd, const A: usize, const B: usize>(
 
 impl<const P: usize, const Q: usize, const FIELD: bool> Kernel for StrangFixed<P, Q, FIELD> {
     const COMPONENTS: usize = Strang::COMPONENTS;
+    const NON_FINITE_PERSISTS: bool = Strang::NON_FINITE_PERSISTS;
     type State<S: Simd> = StrangState<S>;
     fn name(&self) -> String {
         self.0.name()

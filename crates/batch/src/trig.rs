@@ -6,7 +6,10 @@
 //! as kept in musl's `__sin.c` / `__cos.c`: "Permission to use, copy, modify, and distribute this
 //! software is freely granted, provided that this notice is preserved"): minimax fits on
 //! |r| ≤ π/4 with approximation errors below 2⁻⁵⁸, evaluated here by Horner's rule in fused
-//! multiply-adds (the same coefficients as `lie_groups`' scalar `sin_cos`).
+//! multiply-adds (the same coefficients as `lie_groups`' scalar `sin_cos`). Where
+//! |r| ≤ [`SHORT_KERNEL_LIMIT`] = 1/16 (every turn and Rodrigues half angle of a usual step) the
+//! kernels stop two terms (sin) and three terms (cos) early: what they drop is below 0.003 ulp
+//! there, five fused multiply-adds fewer per sin/cos pair.
 //!
 //! **Reduction.** `n = rint(x · 2/π)` (by adding and subtracting 1.5·2⁵², exact for
 //! |x · 2/π| < 2⁵¹) and `r = x − n·π/2` with π/2 = P₁ + P₂ + P₃ split in three doubles (Cody–Waite
@@ -20,14 +23,18 @@
 //! The scalar library takes libm there; no physical step turns a body 4·10⁷ times.
 //!
 //! **Accuracy** (test `sin_cos_matches_libm_over_the_whole_range`): within 1 ulp of glibc's
-//! (correctly rounded in practice) sin and cos on [−2²⁸, 2²⁸], sampled densely near 0, on
-//! [−2π, 2π], within 3 ulps of the multiples of π/2 up to 1000π, and logarithmically from 10⁻³⁰⁰
-//! to 2²⁸; sin(±0) = ±0.
+//! (correctly rounded in practice) sin and cos on [−2²⁸, 2²⁸], sampled densely near 0, on the
+//! short kernels' range and on [−2π, 2π], within 3 ulps of the multiples of π/2 up to 1000π, and
+//! logarithmically from 10⁻³⁰⁰ to 2²⁸; sin(±0) = ±0.
 //!
-//! **One path, every width.** When no lane needs the reduction (`n = 0` in every lane) the kernels
-//! are evaluated on x itself; on the other path the lanes with n = 0 take x itself as the reduced
-//! argument (a select) and the quadrant step leaves them alone, so a lane's bits are the same
-//! whichever path its neighbours sent the vector on (test `a_lane_does_not_depend_on_its_neighbours`).
+//! **One path, every width.** A lane's kernels follow from its own argument: the short ones for
+//! |x| ≤ 1/16, the full ones on x itself up to π/4 (where n = 0), the full ones on the reduced
+//! argument beyond. A vector whose lanes all take the short ones evaluates only those, one whose
+//! lanes all have n = 0 only the full ones on x; on the other paths the lanes with n = 0 take x
+//! itself as the reduced argument (a select, and the quadrant step leaves them alone) and the
+//! short lanes their short kernels (a select), so a lane's bits are the same whichever path its
+//! neighbours sent the vector on (tests `a_lane_does_not_depend_on_its_neighbours`,
+//! `the_short_kernels_do_not_depend_on_the_neighbours`).
 //!
 //! **atan** ([`atan_lane`]): fdlibm's `s_atan.c` (Sun Microsystems, 1993, as kept in musl and the
 //! `libm` crate; the notice above), made branch-free. |x| is reduced to |r| ≤ 7/16 by one of
@@ -77,34 +84,50 @@ const TINY: f64 = 7.450_580_596_923_828e-9;
 /// page).
 pub const REDUCTION_LIMIT: f64 = 268_435_456.0;
 
-/// `(sin r, cos r)` for |r| ≤ π/4 (a little beyond is harmless: the kernels' error grows slowly).
+/// |r| up to which the kernels drop their highest terms: sin r ≈ r + S₁r³ + … + S₄r⁹ and
+/// cos r ≈ 1 − r²/2 + C₁r⁴ + C₂r⁶ + C₃r⁸. The terms dropped, S₅r¹¹ + S₆r¹³ and C₄r¹⁰ + …, are
+/// below 3·10⁻⁴ ulp of sin r and 3·10⁻³ ulp of cos r there (|S₅| r¹⁰ < 2.3·10⁻²⁰ relative,
+/// |C₄| r¹⁰ < 2.6·10⁻¹⁹, an ulp at least 1.1·10⁻¹⁶ relative), so the short kernels are as
+/// accurate as the full ones.
+pub const SHORT_KERNEL_LIMIT: f64 = 0.0625;
+
+/// `(sin r, cos r)` for |r| ≤ π/4 (a little beyond is harmless: the kernels' error grows
+/// slowly); with `SHORT`, for |r| ≤ [`SHORT_KERNEL_LIMIT`] by the short polynomials.
 #[inline(always)]
-fn kernels<S: Simd>(r: F<S>) -> (F<S>, F<S>) {
+fn kernels<S: Simd, const SHORT: bool>(r: F<S>) -> (F<S>, F<S>) {
     let s = r.s;
     let z = r * r;
-    let ps = z.mul_add(
-        z.mul_add(z.mul_add(z.mul_add(k(s, S6), k(s, S5)), k(s, S4)), k(s, S3)),
-        k(s, S2),
-    );
-    let sin = (z * r).mul_add(z.mul_add(ps, k(s, S1)), r);
+    let sin = (z * r).mul_add(z.mul_add(sin_tail::<S, SHORT>(z), k(s, S1)), r);
     // Below 2⁻²⁷, sin r = r correctly rounded; taking r there also keeps sin(−0) = −0 (the sum
     // above gives +0).
     let tiny = r.abs().lt(k(s, TINY));
-    (tiny.select(r, sin), cos_kernel(z))
+    (tiny.select(r, sin), cos_kernel::<S, SHORT>(z))
 }
 
-/// `cos r` from z = r² for |r| ≤ π/4: `w + ((1 − w − r²/2) + r⁴ C(r²))`, w = 1 − r²/2, the
-/// rounding of w carried as in fdlibm.
+/// `S₂ + S₃z + … + S₆z⁴` (with `SHORT`, up to S₄z²) by Horner's rule in fused multiply-adds.
 #[inline(always)]
-fn cos_kernel<S: Simd>(z: F<S>) -> F<S> {
+fn sin_tail<S: Simd, const SHORT: bool>(z: F<S>) -> F<S> {
     let s = z.s;
-    let pc = z.mul_add(
-        z.mul_add(
-            z.mul_add(z.mul_add(z.mul_add(k(s, C6), k(s, C5)), k(s, C4)), k(s, C3)),
-            k(s, C2),
-        ),
-        k(s, C1),
-    );
+    let high = if SHORT {
+        k(s, S4)
+    } else {
+        z.mul_add(z.mul_add(k(s, S6), k(s, S5)), k(s, S4))
+    };
+    z.mul_add(z.mul_add(high, k(s, S3)), k(s, S2))
+}
+
+/// `cos r` from z = r² for |r| ≤ π/4 (with `SHORT`, |r| ≤ [`SHORT_KERNEL_LIMIT`], the terms up
+/// to C₃r⁸): `w + ((1 − w − r²/2) + r⁴ C(r²))`, w = 1 − r²/2, the rounding of w carried as in
+/// fdlibm.
+#[inline(always)]
+fn cos_kernel<S: Simd, const SHORT: bool>(z: F<S>) -> F<S> {
+    let s = z.s;
+    let high = if SHORT {
+        k(s, C3)
+    } else {
+        z.mul_add(z.mul_add(z.mul_add(k(s, C6), k(s, C5)), k(s, C4)), k(s, C3))
+    };
+    let pc = z.mul_add(z.mul_add(high, k(s, C2)), k(s, C1));
     let hz = z * 0.5;
     let w = k(s, 1.0) - hz;
     let tail = (k(s, 1.0) - w) - hz;
@@ -115,21 +138,41 @@ fn cos_kernel<S: Simd>(z: F<S>) -> F<S> {
 #[inline(always)]
 pub(crate) fn sin_cos<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
     let s = x.s;
+    let ax = x.abs();
+    // Every lane within the short kernels' range (false for NaN): they are the result.
+    let short = ax.le(k(s, SHORT_KERNEL_LIMIT));
+    if short.all() {
+        return kernels::<S, true>(x);
+    }
+    let (sin, cos) = sin_cos_full(x, ax);
+    // The lanes within the short kernels' range take them on every path.
+    if short.any() {
+        let (ss, sc) = kernels::<S, true>(x);
+        return (short.select(ss, sin), short.select(sc, cos));
+    }
+    (sin, cos)
+}
+
+/// [`sin_cos`] with the full kernels (`ax` = |x|).
+#[inline(always)]
+fn sin_cos_full<S: Simd>(x: F<S>, ax: F<S>) -> (F<S>, F<S>) {
+    let s = x.s;
+    // n = 0 (below) exactly where |x| ≤ π/4 rounded: fl(x · 2/π) ≤ ½ there, and above ½ at the
+    // next double. Every lane there (false for NaN, ±∞): nothing to reduce, nothing out of
+    // range, so the kernels on x are the result.
+    if ax.le(k(s, core::f64::consts::FRAC_PI_4)).all() {
+        return kernels::<S, false>(x);
+    }
     let nb = x * INV_PIO2 + ROUNDER;
     let n = nb - ROUNDER;
     let zero = k(s, 0.0);
-    // n = 0 in every lane: |x| ≤ π/4 and finite everywhere, nothing to reduce and nothing out
-    // of range (NaN and ±∞ give n ≠ 0), so the kernels on x are the result.
-    if !n.eq(zero).not().any() {
-        return kernels(x);
-    }
     let r = n.mul_add(k(s, -P1), x);
     let r = n.mul_add(k(s, -P2), r);
     let r = n.mul_add(k(s, -P3), r);
     // Lanes with n = 0 take x itself: the same bits as the path without reduction (the
     // terms above would turn x = −0 into +0, P₃ being negative).
     let r = n.eq(zero).select(x, r);
-    let (ks, kc) = kernels(r);
+    let (ks, kc) = kernels::<S, false>(r);
     // n mod 4: odd quadrants swap sin and cos; sin is negated in quadrants 2, 3 and cos in
     // 1, 2.
     let even = nb.bits_clear(1);
@@ -138,9 +181,24 @@ pub(crate) fn sin_cos<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
     let q_next = (nb + 1.0).bits_clear(2);
     let (sin, cos) = (q_low.select(sa, -sa), q_next.select(ca, -ca));
     // Beyond the reduction's range (and for ±∞, NaN): NaN, so that the body fails there.
-    let wild = x.abs().le(k(s, REDUCTION_LIMIT)).not();
+    let wild = ax.le(k(s, REDUCTION_LIMIT)).not();
     let nan = k(s, f64::NAN);
     (wild.select(nan, sin), wild.select(nan, cos))
+}
+
+// |x| ≤ π/4 rounded is where the reduction's n = rint(fl(x · 2/π)) is 0 (ties to even at ½).
+const _: () = assert!(
+    core::f64::consts::FRAC_PI_4 * INV_PIO2 <= 0.5
+        && f64::from_bits(core::f64::consts::FRAC_PI_4.to_bits() + 1) * INV_PIO2 > 0.5
+);
+
+/// `(q, cos h)` of [`rodrigues_coefficients`] from z = h² (|h| ≤ π/4), `q = ½ sin h/h`:
+/// the fdlibm kernels as polynomials in z (with `SHORT`, |h| ≤ [`SHORT_KERNEL_LIMIT`]).
+#[inline(always)]
+fn half_angle<S: Simd, const SHORT: bool>(z: F<S>) -> (F<S>, F<S>) {
+    let s = z.s;
+    let q = z.mul_add(z.mul_add(sin_tail::<S, SHORT>(z), k(s, S1)), k(s, 1.0)) * 0.5;
+    (q, cos_kernel::<S, SHORT>(z))
 }
 
 /// The Rodrigues coefficients `(a, b) = (sin θ/θ, (1 − cos θ)/θ²)` of `exp(ω) = I + aω̂ + bω̂²`
@@ -149,27 +207,32 @@ pub(crate) fn sin_cos<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
 ///
 /// For θ ≤ π/2 (h ≤ π/4, every lane of a usual step) `q = ½ sin h/h` and `cos h` are the fdlibm
 /// kernels as polynomials in h² = θ²/4 — no square root, no division, exact at θ = 0 (a = 1,
-/// b = ½). Only if some lane is beyond π/2 is `q = sin h/θ` formed with √ and ÷ (and taken for
-/// those lanes alone). A non-finite θ² gives NaN.
+/// b = ½) — the short ones where h ≤ [`SHORT_KERNEL_LIMIT`]. Only if some lane is beyond π/2 is
+/// `q = sin h/θ` formed with √ and ÷ (and taken for those lanes alone). A non-finite θ² gives
+/// NaN.
 #[inline(always)]
 pub(crate) fn rodrigues_coefficients<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
     let s = t2.s;
     let z = t2 * 0.25;
-    let ps = z.mul_add(
-        z.mul_add(z.mul_add(z.mul_add(k(s, S6), k(s, S5)), k(s, S4)), k(s, S3)),
-        k(s, S2),
-    );
-    let q = z.mul_add(z.mul_add(ps, k(s, S1)), k(s, 1.0)) * 0.5;
-    let ch = cos_kernel(z);
-    let (q, ch) = {
+    let short = z.le(k(s, SHORT_KERNEL_LIMIT * SHORT_KERNEL_LIMIT));
+    let (q, ch) = if short.all() {
+        half_angle::<S, true>(z)
+    } else {
+        let (q, ch) = half_angle::<S, false>(z);
         let near = z.le(k(
             s,
             core::f64::consts::FRAC_PI_4 * core::f64::consts::FRAC_PI_4,
         ));
-        if near.not().any() {
+        let (q, ch) = if near.not().any() {
             let t = t2.sqrt();
             let (sh, chg) = sin_cos(t * 0.5);
             (near.select(q, sh / t), near.select(ch, chg))
+        } else {
+            (q, ch)
+        };
+        if short.any() {
+            let (qs, cs) = half_angle::<S, true>(z);
+            (short.select(qs, q), short.select(cs, ch))
         } else {
             (q, ch)
         }
@@ -216,6 +279,46 @@ pub fn sin_cos_slices(
         }
     }
     level.dispatch(Op(x, sin, cos))
+}
+
+/// The lanes' Rodrigues coefficients over slices on a given level: `a[i], b[i]` are
+/// [`rodrigues_coefficients_lane`]`(t2[i])`, the last vector padded. Made callable on its own
+/// for its tests (a lane's bits whatever its neighbours). Errors: unequal lengths, or a level
+/// this CPU lacks.
+pub fn rodrigues_coefficients_slices(
+    level: Level,
+    t2: &[f64],
+    a: &mut [f64],
+    b: &mut [f64],
+) -> Result<(), BatchError> {
+    for (what, len) in [("a", a.len()), ("b", b.len())] {
+        if len != t2.len() {
+            return Err(BatchError::LengthMismatch {
+                what,
+                got: len,
+                expected: t2.len(),
+            });
+        }
+    }
+    struct Op<'a>(&'a [f64], &'a mut [f64], &'a mut [f64]);
+    impl WithSimd for Op<'_> {
+        type Output = ();
+        #[inline(always)]
+        fn with_simd<S: Simd>(self, s: S) {
+            let w = S::F64_LANES;
+            for ((t2, a), b) in self
+                .0
+                .chunks(w)
+                .zip(self.1.chunks_mut(w))
+                .zip(self.2.chunks_mut(w))
+            {
+                let (x, y) = rodrigues_coefficients(F::load(s, t2));
+                x.store(a);
+                y.store(b);
+            }
+        }
+    }
+    level.dispatch(Op(t2, a, b))
 }
 
 /// `(sin x, cos x)` on one lane: the bits every lane of every level computes for x (the scalar

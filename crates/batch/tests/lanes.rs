@@ -105,6 +105,21 @@ fn a_body_has_the_same_bits_in_every_lane_size_level_and_thread_count() {
     same_bits_everywhere(ExactFlow::new(free).unwrap(), "exact");
 }
 
+/// A Strang body keeps its bits next to bodies whose steps turn them by any angle: |Π| from 10⁻³
+/// to 200 side by side (turns and Rodrigues half angles within the short kernels' range, within
+/// π/4, and beyond it: the reduction and the general Rodrigues path), free and in a field.
+#[test]
+fn a_strang_body_has_the_same_bits_next_to_bodies_turning_by_any_angle() {
+    let radii = [1.5, 20.0, 200.0, 1e-3, 5.0];
+    let states: Vec<_> = (0..1000u64)
+        .map(|i| state(radii[i as usize % radii.len()], 5, i))
+        .collect();
+    let free = BodyModel::free(&bodies()[0]).unwrap();
+    let field = BodyModel::heavy_top(&tops()[1]).unwrap();
+    same_bits_for(Strang::new(free), "Strang free, any angle", states.clone());
+    same_bits_for(Strang::new(field), "Strang field, any angle", states);
+}
+
 /// The batched exact flow's bodies of every kind side by side — generic orbits (the lanes),
 /// bodies at rest, steady rotations about an axis, states on the separatrix in exact arithmetic
 /// (k' = 0: the scalar path), an ulp off it and near it — keep their bits whatever their lane,
@@ -206,6 +221,119 @@ fn a_bad_body_fails_alone() {
     fails_alone(Rkmk4::new(free.clone()), "RKMK4 free");
     fails_alone(Rkmk4::new(field), "RKMK4 field");
     fails_alone(ExactFlow::new(free).unwrap(), "exact");
+}
+
+/// A body that fails in the middle of a call (the step loop checks the lanes once per call
+/// when it can, and then runs the call again checked after every step) fails at its own step:
+/// its status, last finite state, steps, time and monitored maxima are those of a batch of it
+/// alone stopped before that step, and its neighbours' bits and maxima those of a batch without
+/// it. The body turns steadily about the perturbed axis p (Π = X a_p), by (h/2) r_p X in the
+/// first step's opening turn and by h r_p X in every later one (the merged half steps,
+/// r_p = 1/I_p − 1/I_r): X puts the second turn beyond the lanes' 2²⁸ rad and the first
+/// within it. Monitored every third step: the unchecked pass monitored the body's non-finite
+/// states, the checked one never reaches a monitored step of it.
+#[test]
+fn a_body_that_fails_in_the_middle_of_a_call_fails_at_its_step() {
+    let body = &bodies()[0];
+    let model = BodyModel::free(body).unwrap();
+    let [r, p, _] = body.split_axes();
+    let moments = body.principal_frame().1;
+    let rate = (1.0 / moments[p] - 1.0 / moments[r]).abs();
+    let limit = batch::trig::REDUCTION_LIMIT;
+    let x = 1.5 * limit / (H * rate);
+    // the first step (its Rodrigues angle h X / I_r on the general path, halved there) stays
+    // within the range
+    assert!(H * x / moments[r] / 2.0 < limit && 0.5 * H * rate * x < limit);
+    let n = 16;
+    let states: Vec<_> = (0..n as u64).map(|i| state(1.0, 9, i)).collect();
+    let mut pis: Vec<_> = states.iter().map(|s| s.0).collect();
+    let rs: Vec<_> = states.iter().map(|s| s.1).collect();
+    let kernel = Strang::new(model);
+    let batch_of = |pis: &[Vector3<f64>], rs: &[So3], steps: u64| {
+        let mut b = Batch::new(kernel.clone(), pis, rs, Level::detect())
+            .unwrap()
+            .monitor_every(3);
+        b.run(H, steps).unwrap();
+        b
+    };
+    let bits = |b: &mut Batch<Strang>, i: usize| {
+        let (pi, r) = b.state(i).unwrap();
+        let s = &b.summaries(|i| i)[i];
+        let mut v: Vec<u64> = pi
+            .iter()
+            .chain(r.as_matrix().iter())
+            .map(|x| x.to_bits())
+            .collect();
+        v.extend([
+            s.max_energy_error.to_bits(),
+            s.max_casimir_error.unwrap().to_bits(),
+        ]);
+        (v, s.status.clone(), s.steps, s.time)
+    };
+    let mut clean = batch_of(&pis, &rs, STEPS);
+    pis[10] = Vector3::zeros();
+    pis[10][p] = x;
+    let mut bad = batch_of(&pis, &rs, STEPS);
+    let mut alone = batch_of(&pis[10..11], &rs[10..11], 1);
+    assert_eq!(bad.status(10).unwrap(), LaneStatus::Failed { step: 1 });
+    let (got, status, steps, time) = bits(&mut bad, 10);
+    assert!(matches!(status, Status::StepFailed { .. }), "{status:?}");
+    assert_eq!((steps, time), (1, H));
+    assert_eq!(
+        got,
+        bits(&mut alone, 0).0,
+        "the failed body's state and maxima"
+    );
+    for i in (0..n).filter(|&i| i != 10) {
+        assert_eq!(bad.status(i).unwrap(), LaneStatus::Running, "body {i}");
+        assert_eq!(bits(&mut bad, i), bits(&mut clean, i), "body {i}");
+    }
+}
+
+/// A body that ran a call and fails at the first step of the next one (|Π| = 10⁷, then steps
+/// of h = 1000 turn it beyond 2²⁸ rad, and not its neighbours with |Π| = 1) keeps the largest
+/// energy and Casimir errors of its monitored steps before, as a batch of it alone stopped
+/// there: the unchecked pass, which monitored its non-finite states, leaves the maxima as they
+/// were. The neighbours are those of a batch without it.
+#[test]
+fn a_body_that_fails_keeps_its_monitored_maxima() {
+    let kernel = Strang::new(BodyModel::free(&bodies()[0]).unwrap());
+    let n = 16;
+    let states: Vec<_> = (0..n as u64).map(|i| state(1.0, 9, i)).collect();
+    let mut pis: Vec<_> = states.iter().map(|s| s.0).collect();
+    let rs: Vec<_> = states.iter().map(|s| s.1).collect();
+    let summaries = |pis: &[Vector3<f64>], rs: &[So3], calls: &[(f64, u64)]| {
+        let mut b = Batch::new(kernel.clone(), pis, rs, Level::detect())
+            .unwrap()
+            .monitor_every(1);
+        for &(h, steps) in calls {
+            b.run(h, steps).unwrap();
+        }
+        b.summaries(|i| i)
+    };
+    let calls = [(H, 5), (1000.0, 3)];
+    let clean = summaries(&pis, &rs, &calls);
+    pis[10] *= 1e7;
+    let bad = summaries(&pis, &rs, &calls);
+    let alone = summaries(&pis[10..11], &rs[10..11], &calls[..1]);
+    assert!(
+        matches!(bad[10].status, Status::StepFailed { step: 5, .. }),
+        "{:?}",
+        bad[10].status
+    );
+    let maxima = |s: &integrators::ensemble::Summary<Vector3<f64>>| {
+        [s.max_energy_error, s.max_casimir_error.unwrap()].map(f64::to_bits)
+    };
+    assert_eq!(
+        maxima(&bad[10]),
+        maxima(&alone[0]),
+        "the failed body's maxima"
+    );
+    assert_eq!(bad[10].momentum, alone[0].momentum);
+    for i in (0..n).filter(|&i| i != 10) {
+        assert_eq!(bad[i].status, Status::Completed, "body {i}");
+        assert_eq!(bad[i], clean[i], "body {i}");
+    }
 }
 
 /// Zero bodies, arrays of different lengths, an unusable step or a body out of range: a clear

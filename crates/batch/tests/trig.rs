@@ -2,8 +2,8 @@
 //! range, on every level, and the Rodrigues coefficients against their closed forms.
 
 use batch::trig::{
-    atan_lane, atan_slices, rodrigues_coefficients_lane, sin_cos_lane, sin_cos_slices,
-    REDUCTION_LIMIT,
+    atan_lane, atan_slices, rodrigues_coefficients_lane, rodrigues_coefficients_slices,
+    sin_cos_lane, sin_cos_slices, REDUCTION_LIMIT, SHORT_KERNEL_LIMIT,
 };
 use batch::Level;
 
@@ -18,15 +18,20 @@ fn ulps(a: f64, b: f64) -> u64 {
     (a.to_bits() as i64 - b.to_bits() as i64).unsigned_abs()
 }
 
-/// Arguments: dense near 0, on [−2π, 2π], near multiples of π/2, and logarithmic to 2²⁸ (the
-/// reduction's range).
+/// Arguments: dense near 0, on the short kernels' range and on [−2π, 2π], a few ulps about the
+/// short range's ends, near multiples of π/2, and logarithmic to 2²⁸ (the reduction's range).
 fn arguments() -> Vec<f64> {
     let mut xs = Vec::new();
     let n = 400_000;
     for i in 0..=n {
         let t = -1.0 + 2.0 * i as f64 / n as f64;
         xs.push(t * core::f64::consts::TAU);
+        xs.push(t * SHORT_KERNEL_LIMIT);
         xs.push(t * 1e-3);
+    }
+    for d in -4i64..=4 {
+        let x = f64::from_bits((SHORT_KERNEL_LIMIT.to_bits() as i64 + d) as u64);
+        xs.extend([x, -x]);
     }
     // logarithmic, both signs, up to the reduction limit
     let m = 200_000;
@@ -131,6 +136,64 @@ fn a_lane_does_not_depend_on_its_neighbours() {
     }
 }
 
+/// Dense arguments `0 < xᵢ ≤ limit`, both signs, and the same with every eighth (from lane
+/// `first`) replaced by `wild`.
+fn with_a_wild_neighbour(limit: f64, first: usize, wild: f64) -> (Vec<f64>, Vec<f64>) {
+    let n = 40_000;
+    let xs: Vec<f64> = (1..=n)
+        .map(|i| limit * i as f64 / n as f64 * if i % 3 == 0 { -1.0 } else { 1.0 })
+        .collect();
+    let mut mixed = xs.clone();
+    for x in mixed.iter_mut().skip(first).step_by(8) {
+        *x = wild;
+    }
+    (xs, mixed)
+}
+
+/// The short kernels' lanes keep their bits next to a lane that needs the full kernels, the
+/// reduction or is NaN, on every level: sin and cos over the short range, and the Rodrigues
+/// coefficients where the half angle is in it (θ² ≤ 4·limit²) next to θ² = 0.1 (the full
+/// kernels), 9 (beyond π/2: √ and ÷) and NaN.
+#[test]
+fn the_short_kernels_do_not_depend_on_the_neighbours() {
+    for level in Level::available() {
+        for (first, wild) in [(0, 0.3), (3, 3.0), (7, f64::NAN)] {
+            let (xs, mixed) = with_a_wild_neighbour(SHORT_KERNEL_LIMIT, first, wild);
+            let run = |xs: &[f64]| {
+                let (mut s, mut c) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
+                sin_cos_slices(level, xs, &mut s, &mut c).unwrap();
+                (s, c)
+            };
+            let ((s, c), (s1, c1)) = (run(&xs), run(&mixed));
+            for i in (0..xs.len()).filter(|i| i % 8 != first) {
+                assert_eq!(s1[i].to_bits(), s[i].to_bits(), "{level}: sin({:e})", xs[i]);
+                assert_eq!(c1[i].to_bits(), c[i].to_bits(), "{level}: cos({:e})", xs[i]);
+            }
+        }
+        for (first, wild) in [(0, 0.1), (3, 9.0), (7, f64::NAN)] {
+            let limit = 4.0 * SHORT_KERNEL_LIMIT * SHORT_KERNEL_LIMIT;
+            let (t2, mixed) = with_a_wild_neighbour(limit, first, wild);
+            let t2: Vec<f64> = t2.iter().map(|x| x.abs()).collect();
+            let mixed: Vec<f64> = mixed.iter().map(|x| x.abs()).collect();
+            let run = |t2: &[f64]| {
+                let (mut a, mut b) = (vec![0.0; t2.len()], vec![0.0; t2.len()]);
+                rodrigues_coefficients_slices(level, t2, &mut a, &mut b).unwrap();
+                (a, b)
+            };
+            let ((a, b), (a1, b1)) = (run(&t2), run(&mixed));
+            for i in (0..t2.len()).filter(|i| i % 8 != first) {
+                assert_eq!(a1[i].to_bits(), a[i].to_bits(), "{level}: a({:e})", t2[i]);
+                assert_eq!(b1[i].to_bits(), b[i].to_bits(), "{level}: b({:e})", t2[i]);
+                let lane = rodrigues_coefficients_lane(t2[i]);
+                assert_eq!(
+                    (a[i].to_bits(), b[i].to_bits()),
+                    (lane.0.to_bits(), lane.1.to_bits())
+                );
+            }
+        }
+    }
+}
+
 /// NaN and ±∞ give NaN (as libm), and so does an argument beyond the reduction's range, so
 /// that a body turned that far fails instead of carrying a wrong angle.
 #[test]
@@ -155,8 +218,11 @@ fn nan_infinities_and_arguments_beyond_the_range_give_nan() {
 #[test]
 fn rodrigues_coefficients_match_their_closed_forms() {
     let mut worst = (0u64, 0u64);
-    for i in 1..=200_000 {
-        let theta = 6.0 * i as f64 / 200_000.0;
+    // θ up to 6, and densely up to 2·SHORT_KERNEL_LIMIT (the half angle's short kernels)
+    let thetas = (1..=200_000)
+        .map(|i| 6.0 * i as f64 / 200_000.0)
+        .chain((1..=100_000).map(|i| 2.0 * SHORT_KERNEL_LIMIT * i as f64 / 100_000.0));
+    for theta in thetas {
         let t2 = theta * theta;
         let th = t2.sqrt();
         let (a, b) = rodrigues_coefficients_lane(t2);
