@@ -25,8 +25,22 @@
 //! is a Poisson integrator, keeps the Casimirs of an invariant system to round-off, and keeps the
 //! spatial momentum map `Ad*_{g⁻¹} μ` (each piece's flow does: `g exp(tξ)` and `Ad*_{exp(tξ)} μ`).
 //! Integrators: [`Splitting`] (Strang over all pieces: order 2, symmetric, so that
-//! [`crate::Composition`] raises it to order 4, 6, 8, 10) and [`KineticKick`] (exact kinetic flow
-//! and kicks with the coefficients of a [`SplittingScheme`]: Strang, Blanes–Moan order 4 and 6).
+//! [`crate::Composition`] raises it to order 4, 6, 8, 10), [`KineticKick`] (exact kinetic flow
+//! and kicks with the coefficients of a [`SplittingScheme`]: Strang, Blanes–Moan order 4 and 6)
+//! and [`CasimirSplitting`] (a free system `h = C + h_A + h_B` with C a Casimir function,
+//! declared by [`CasimirSplit`]: C's flow commutes with the others, so it is applied once a step
+//! and a [`SplittingScheme`] splits `h_A + h_B` alone).
+//!
+//! ## Which splitting
+//! - **The free rigid body**: [`CasimirSplitting`], C = |Π|²/2I_r with the middle moment, A and B
+//!   rotations about the two other principal axes. With the Strang scheme it is the same map as
+//!   [`Splitting`]; of higher order, Blanes–Moan 6 or a composition of Strang folded into one
+//!   scheme ([`SplittingScheme::strang_composed`], e.g. Kahan–Li 8) apply the one Rodrigues
+//!   product of C once a step, where [`crate::Composition`] of [`Splitting`] applies it at every
+//!   stage — every other flow being a plane rotation, that product is much of a stage's cost.
+//! - **A body in a potential or under forces** (the heavy top, the SE(3) body): [`Splitting`]
+//!   and its compositions, or [`KineticKick`] where the kinetic flow is known in closed form
+//!   (the kick is then the only discretised part). C no longer commutes with the potential.
 //!
 //! Systems without such a splitting (the generalized rigid body on SO(n): its pieces' velocities
 //! are not constant along their flows, and no closed form is known) do not implement
@@ -50,6 +64,8 @@
 //! # Ok::<(), integrators::IntegratorError>(())
 //! ```
 
+mod casimir_split;
+mod casimir_splitting;
 mod kick;
 mod kinetic_kick;
 mod scheme;
@@ -68,6 +84,8 @@ pub(crate) const PRODUCTS_PER_STEP: u32 = 4;
 /// [`crate::RENORMALIZE_AFTER`] rounded products have accumulated (four a step),
 /// ‖gᵀg − I‖ ≈ ε√(4k) ≲ 1e-14 in between.
 pub const RENORMALIZE_EVERY: u32 = crate::step_state::renormalize_every(PRODUCTS_PER_STEP);
+pub use casimir_split::CasimirSplit;
+pub use casimir_splitting::CasimirSplitting;
 pub use kinetic_kick::{KineticFlow, KineticKick};
 pub use scheme::SplittingScheme;
 pub use split_system::SplitSystem;

@@ -1,7 +1,8 @@
 //! Coefficients of symmetric two-part splitting schemes `e^{h(A+B)}`, with A the cheap part
 //! (the kick) and B the expensive one (the exact kinetic flow).
 
-use crate::IntegratorError;
+use crate::{CompositionScheme, IntegratorError};
+use std::borrow::Cow;
 
 /// A symmetric splitting scheme for `X = A + B` in the form
 ///
@@ -16,7 +17,7 @@ use crate::IntegratorError;
 /// against `e^{h(A+B)}` for random non-commuting matrices A, B.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SplittingScheme {
-    name: &'static str,
+    name: Cow<'static, str>,
     order: u32,
     a: Vec<f64>,
     b: Vec<f64>,
@@ -43,7 +44,7 @@ impl SplittingScheme {
     /// flow a step.
     pub fn strang() -> Self {
         Self {
-            name: "strang",
+            name: Cow::Borrowed("strang"),
             order: 2,
             a: vec![0.5, 0.5],
             b: vec![1.0],
@@ -56,7 +57,7 @@ impl SplittingScheme {
     #[allow(clippy::excessive_precision)] // the published digits, kept verbatim
     pub fn blanes_moan_4() -> Self {
         Self {
-            name: "blanes-moan-4",
+            name: Cow::Borrowed("blanes-moan-4"),
             order: 4,
             a: palindrome(
                 &[0.0792036964311957, 0.353172906049774, -0.0420650803577195],
@@ -70,7 +71,7 @@ impl SplittingScheme {
     #[allow(clippy::excessive_precision)] // the published digits, kept verbatim
     pub fn blanes_moan_6() -> Self {
         Self {
-            name: "blanes-moan-6",
+            name: Cow::Borrowed("blanes-moan-6"),
             order: 6,
             a: palindrome(
                 &[
@@ -94,6 +95,39 @@ impl SplittingScheme {
         }
     }
 
+    /// The composition `Ψ_h = S_{γ_s h} ∘ … ∘ S_{γ₁ h}` of the Strang step
+    /// `S_h = e^{hA/2} e^{hB} e^{hA/2}` with the coefficients γ of `composition`, as one scheme:
+    /// adjacent half-flows of A merge (`e^{sA} e^{s'A} = e^{(s+s')A}`), so
+    ///
+    /// ```text
+    /// bᵢ = γᵢ,   a₁ = γ₁/2,   aᵢ = (γᵢ₋₁ + γᵢ)/2 (1 < i ≤ s),   a_{s+1} = γ_s/2,
+    /// ```
+    ///
+    /// the same map as [`crate::Composition`] of the Strang step, of the composition's order,
+    /// palindromic when γ is. Named `<composition>∘strang`. Errors: a composition that is not
+    /// palindromic (the scheme would not be symmetric).
+    pub fn strang_composed(composition: &CompositionScheme) -> Result<Self, IntegratorError> {
+        if !composition.is_symmetric() {
+            return Err(IntegratorError::InvalidParameter {
+                reason: format!(
+                    "composition scheme {} is not palindromic",
+                    composition.name()
+                ),
+            });
+        }
+        let g = composition.gammas();
+        let mut a = Vec::with_capacity(g.len() + 1);
+        a.push(0.5 * g[0]);
+        a.extend(g.windows(2).map(|w| 0.5 * (w[0] + w[1])));
+        a.push(0.5 * g[g.len() - 1]);
+        Ok(Self {
+            name: Cow::Owned(format!("{}∘strang", composition.name())),
+            order: composition.order(),
+            a,
+            b: g.to_vec(),
+        })
+    }
+
     /// Every built-in scheme.
     pub fn builtin() -> Vec<Self> {
         vec![Self::strang(), Self::blanes_moan_4(), Self::blanes_moan_6()]
@@ -103,13 +137,13 @@ impl SplittingScheme {
     pub fn by_name(name: &str) -> Result<Self, IntegratorError> {
         Self::builtin()
             .into_iter()
-            .find(|s| s.name == name)
+            .find(|s| s.name() == name)
             .ok_or_else(|| IntegratorError::InvalidParameter {
                 reason: format!(
                     "unknown splitting scheme {name:?} (known: {})",
                     Self::builtin()
                         .iter()
-                        .map(|s| s.name)
+                        .map(|s| s.name().to_string())
                         .collect::<Vec<_>>()
                         .join(", ")
                 ),
@@ -117,8 +151,8 @@ impl SplittingScheme {
     }
 
     /// The name.
-    pub fn name(&self) -> &'static str {
-        self.name
+    pub fn name(&self) -> &str {
+        &self.name
     }
     /// The order.
     pub fn order(&self) -> u32 {

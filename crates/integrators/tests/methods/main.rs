@@ -10,6 +10,7 @@ mod adaptive_tolerance;
 mod assembled_step;
 mod baselines;
 mod casimir_drift;
+mod casimir_splitting;
 mod compose;
 mod control_input;
 mod controller;

@@ -7,7 +7,7 @@
 
 use integrators::baselines::{QuaternionRk4, Rkmk4};
 use integrators::forces::{BodyTorque, Forced, LinearDamping, QuadraticDrag, Schedule};
-use integrators::splitting::Splitting;
+use integrators::splitting::{CasimirSplitting, Splitting, SplittingScheme};
 use integrators::{
     EulerPoincare, GraggBulirschStoer, Integrator, LiePoisson, SolverConfig, SolverKind, System,
 };
@@ -94,6 +94,10 @@ fn so3_steps_allocate_nothing() {
     for g0 in [Some(r0), None] {
         assert_steps_allocate_nothing(QuaternionRk4::new(body.clone(), pi0, g0).unwrap(), 0.01);
         assert_steps_allocate_nothing(Rkmk4::new(body.clone(), pi0, g0).unwrap(), 0.01);
+        assert_steps_allocate_nothing(
+            CasimirSplitting::new(body.clone(), SplittingScheme::blanes_moan_6(), pi0, g0).unwrap(),
+            0.01,
+        );
         assert_steps_allocate_nothing(
             GraggBulirschStoer::new(body.clone(), pi0, g0).unwrap(),
             0.01,

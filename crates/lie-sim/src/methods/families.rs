@@ -46,6 +46,11 @@ pub const SPLITTING: Family = Family {
     name: "splitting",
     color: RGBColor(148, 103, 189),
 };
+/// The Casimir splitting of the free body (its coefficients and folded compositions).
+pub const CASIMIR_SPLITTING: Family = Family {
+    name: "casimir-splitting",
+    color: RGBColor(127, 127, 127),
+};
 /// The exact flow.
 pub const EXACT: Family = Family {
     name: "exact",

@@ -91,6 +91,7 @@ methods! {
     Rkmk4 => rkmk4,
     Splitting => splitting,
     KineticKick => kinetic_kick,
+    CasimirSplitting => casimir_splitting,
     Exact => exact,
     RkmkDopri5 => rkmk_dopri5,
     RkmkDop853 => rkmk_dop853,

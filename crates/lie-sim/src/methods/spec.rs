@@ -192,9 +192,9 @@ pub fn check(it: &RawIntegrator) -> Result<MethodSpec, FieldError> {
         (None, true) => Some(SplittingScheme::strang()),
         (None, false) => None,
         (Some(name), true) => Some(SplittingScheme::by_name(name).map_err(|_| {
-            let known: Vec<&str> = SplittingScheme::builtin()
+            let known: Vec<String> = SplittingScheme::builtin()
                 .iter()
-                .map(|s| s.name())
+                .map(|s| s.name().to_string())
                 .collect();
             (
                 field("splitting"),

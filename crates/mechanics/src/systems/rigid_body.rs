@@ -6,7 +6,7 @@
 //! `Π̇ = Π × Ω`, `Ṙ = R Ω̂` (test `rigid_body_vector_field_is_euler_equations`).
 //! Casimir: `C(Π) = |Π|²`.
 
-use integrators::splitting::SplitSystem;
+use integrators::splitting::{CasimirSplit, SplitSystem};
 use integrators::{DensityScope, EulerArnold, IntegratorError, System};
 use lie_groups::{sin_cos, LieGroup, So3};
 use nalgebra::{Matrix3, Vector3};
@@ -330,6 +330,54 @@ impl SplitSystem<So3> for RigidBody {
     #[inline(always)]
     fn piece_flow(&self, i: usize, t: f64, mu: &mut Vector3<f64>, g: Option<&mut So3>) {
         self.split_flow(i, t, mu, g, None);
+    }
+}
+
+/// The free body as its Casimir part plus two principal-axis rotations: with the reference moment
+/// I_r (the middle one) and the other two axes p and s ([`RigidBody::split_axes`]),
+///
+/// ```text
+/// h = |Π|²/2I_r  +  ½(1/I_p − 1/I_r)(a_p·Π)²  +  ½(1/I_s − 1/I_r)(a_s·Π)²
+///      C (Casimir)        piece 0 (A)                  piece 1 (B)
+/// ```
+///
+/// φᶜ: `R ← R exp(tΠ̂/I_r)`, Π fixed; piece i rotates Π about its axis aᵢ by `−α`, R by `+α`,
+/// `α = t(1/Iᵢ − 1/I_r)(aᵢ·Π)` (a plane rotation of two coordinates for a diagonal 𝕀). The
+/// stronger perturbation is A, as the outer piece of the [`SplitSystem`] impl: with the Strang
+/// scheme, [`integrators::splitting::CasimirSplitting`] is the same map as that splitting.
+impl CasimirSplit<So3> for RigidBody {
+    #[inline]
+    fn casimir_velocity(&self, mu: &Vector3<f64>) -> Vector3<f64> {
+        mu * self.split_rates[0]
+    }
+    #[inline]
+    fn perturbation_velocity(&self, i: usize, mu: &Vector3<f64>) -> Vector3<f64> {
+        let (axis, rate) = self.perturbation(i);
+        let a = self.axes.column(axis);
+        a * (a.dot(mu) * rate)
+    }
+    #[inline(always)]
+    fn casimir_flow(&self, t: f64, mu: &Vector3<f64>, g: &mut So3) {
+        *g = g.compose_exp(&(mu * (t * self.split_rates[0])));
+    }
+    #[inline(always)]
+    fn perturbation_flow(&self, i: usize, t: f64, mu: &mut Vector3<f64>, g: Option<&mut So3>) {
+        let (axis, rate) = self.perturbation(i);
+        self.turn_about(axis, rate, t, mu, g, None);
+    }
+}
+
+impl RigidBody {
+    /// The axis and rate `1/Iᵢ − 1/I_r` of perturbation i of [`CasimirSplit`] (0: p, else s).
+    #[inline(always)]
+    fn perturbation(&self, i: usize) -> (usize, f64) {
+        let [_, p, s] = self.split_axes;
+        let [_, rate_p, rate_s] = self.split_rates;
+        if i == 0 {
+            (p, rate_p)
+        } else {
+            (s, rate_s)
+        }
     }
 }
 
