@@ -67,7 +67,7 @@ enum Task {
         /// The column runs are picked by: `error` (at T), `max_energy_error`, …
         metric: String,
         /// The targets, e.g. 1e-4 1e-6.
-        #[arg(required = true, allow_hyphen_values = true)]
+        #[arg(required = true)]
         targets: Vec<f64>,
         /// Methods to leave out (comma-separated), e.g. `exact,kinetic-kick`.
         #[arg(long, value_delimiter = ',')]
