@@ -56,8 +56,9 @@ impl RigidBody {
                 axes.column_mut(2).neg_mut();
             }
             // One Newton–Schulz step A ← A(3I − AᵀA)/2 towards the nearest orthogonal matrix:
-            // the eigenvectors are orthonormal to a few ε, and the exact flow, restarted at every
-            // call of a splitting, maps Π to the frame and back, scaling it by AAᵀ each time.
+            // the eigenvectors are orthonormal to a few ε, and every use of the frame (the
+            // splittings' rotations about its axes, the exact flow's map to principal
+            // coordinates and back, its attitude) takes its columns as orthonormal.
             let axes = (axes * (Matrix3::identity() * 3.0 - axes.transpose() * axes)) * 0.5;
             (axes, eig.eigenvalues)
         };
