@@ -251,34 +251,15 @@ pub fn sin_cos_slices(
     sin: &mut [f64],
     cos: &mut [f64],
 ) -> Result<(), BatchError> {
-    for (what, len) in [("sin", sin.len()), ("cos", cos.len())] {
-        if len != x.len() {
-            return Err(BatchError::LengthMismatch {
-                what,
-                got: len,
-                expected: x.len(),
-            });
-        }
-    }
-    struct Op<'a>(&'a [f64], &'a mut [f64], &'a mut [f64]);
-    impl WithSimd for Op<'_> {
-        type Output = ();
+    struct SinCos;
+    impl PairKernel for SinCos {
+        const NAMES: [&'static str; 2] = ["sin", "cos"];
         #[inline(always)]
-        fn with_simd<S: Simd>(self, s: S) {
-            let w = S::F64_LANES;
-            for ((x, sn), cs) in self
-                .0
-                .chunks(w)
-                .zip(self.1.chunks_mut(w))
-                .zip(self.2.chunks_mut(w))
-            {
-                let (a, b) = sin_cos(F::load(s, x));
-                a.store(sn);
-                b.store(cs);
-            }
+        fn apply<S: Simd>(x: F<S>) -> (F<S>, F<S>) {
+            sin_cos(x)
         }
     }
-    level.dispatch(Op(x, sin, cos))
+    map_pairs::<SinCos>(level, x, sin, cos)
 }
 
 /// The lanes' Rodrigues coefficients over slices on a given level: `a[i], b[i]` are
@@ -291,34 +272,65 @@ pub fn rodrigues_coefficients_slices(
     a: &mut [f64],
     b: &mut [f64],
 ) -> Result<(), BatchError> {
-    for (what, len) in [("a", a.len()), ("b", b.len())] {
-        if len != t2.len() {
+    struct Rodrigues;
+    impl PairKernel for Rodrigues {
+        const NAMES: [&'static str; 2] = ["a", "b"];
+        #[inline(always)]
+        fn apply<S: Simd>(t2: F<S>) -> (F<S>, F<S>) {
+            rodrigues_coefficients(t2)
+        }
+    }
+    map_pairs::<Rodrigues>(level, t2, a, b)
+}
+
+/// A lane kernel of one argument and two results, for [`map_pairs`].
+trait PairKernel {
+    /// The names of the two results, for a length error.
+    const NAMES: [&'static str; 2];
+    fn apply<S: Simd>(x: F<S>) -> (F<S>, F<S>);
+}
+
+/// `(p[i], q[i]) = K::apply(x[i])` vector by vector on `level`, the last vector padded.
+/// Errors: unequal lengths, or a level this CPU lacks.
+fn map_pairs<K: PairKernel>(
+    level: Level,
+    x: &[f64],
+    p: &mut [f64],
+    q: &mut [f64],
+) -> Result<(), BatchError> {
+    for (what, len) in K::NAMES.into_iter().zip([p.len(), q.len()]) {
+        if len != x.len() {
             return Err(BatchError::LengthMismatch {
                 what,
                 got: len,
-                expected: t2.len(),
+                expected: x.len(),
             });
         }
     }
-    struct Op<'a>(&'a [f64], &'a mut [f64], &'a mut [f64]);
-    impl WithSimd for Op<'_> {
+    struct Op<'a, K>(
+        &'a [f64],
+        &'a mut [f64],
+        &'a mut [f64],
+        core::marker::PhantomData<K>,
+    );
+    impl<K: PairKernel> WithSimd for Op<'_, K> {
         type Output = ();
         #[inline(always)]
         fn with_simd<S: Simd>(self, s: S) {
             let w = S::F64_LANES;
-            for ((t2, a), b) in self
+            for ((x, p), q) in self
                 .0
                 .chunks(w)
                 .zip(self.1.chunks_mut(w))
                 .zip(self.2.chunks_mut(w))
             {
-                let (x, y) = rodrigues_coefficients(F::load(s, t2));
-                x.store(a);
-                y.store(b);
+                let (a, b) = K::apply(F::load(s, x));
+                a.store(p);
+                b.store(q);
             }
         }
     }
-    level.dispatch(Op(t2, a, b))
+    level.dispatch(Op::<K>(x, p, q, core::marker::PhantomData))
 }
 
 /// `(sin x, cos x)` on one lane: the bits every lane of every level computes for x (the scalar
