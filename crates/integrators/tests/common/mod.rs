@@ -318,3 +318,14 @@ impl integrators::splitting::SplitSystem<So3> for PrincipalAxes {
         self.0.principal_piece_velocity(i, mu)
     }
 }
+
+/// The distance of a state (R, Π) from a reference: max(‖ΔR‖_max, ‖ΔΠ‖_max / scale).
+pub fn error_vs(
+    reference: &(Matrix3<f64>, Vector3<f64>),
+    got: &(Matrix3<f64>, Vector3<f64>),
+    scale: f64,
+) -> f64 {
+    (got.0 - reference.0)
+        .amax()
+        .max((got.1 - reference.1).amax() / scale)
+}

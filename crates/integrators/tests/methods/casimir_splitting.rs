@@ -133,16 +133,6 @@ fn strang_composed_scheme_is_the_composition_of_strang() {
 /// Builds an integrator afresh.
 type Make<'a> = Box<dyn Fn() -> Box<dyn Integrator<Group = So3>> + 'a>;
 
-fn error_vs(
-    reference: &(Matrix3<f64>, Vector3<f64>),
-    got: &(Matrix3<f64>, Vector3<f64>),
-    scale: f64,
-) -> f64 {
-    (got.0 - reference.0)
-        .amax()
-        .max((got.1 - reference.1).amax() / scale)
-}
-
 /// Every scheme has its order (fitted within 0.2) against the exact flow (`mechanics::exact`) on
 /// both bodies, Π₀ = (1, 0.5, −0.3), T = 10: Strang 2, Blanes–Moan 4 and 6, Kahan–Li 8 folded
 /// (`strang_composed`) and composed (`Composition`) 8. Steps in each scheme's asymptotic range,

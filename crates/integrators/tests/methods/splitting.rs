@@ -138,16 +138,6 @@ fn pieces_sum_to_the_velocity_and_are_constant_along_their_flows() {
     );
 }
 
-fn error_vs(
-    reference: &(Matrix3<f64>, Vector3<f64>),
-    got: &(Matrix3<f64>, Vector3<f64>),
-    scale: f64,
-) -> f64 {
-    (got.0 - reference.0)
-        .amax()
-        .max((got.1 - reference.1).amax() / scale)
-}
-
 /// Fitted order of `make()` integrated to t with each n of `steps`, against `reference`.
 fn order_of<I: Integrator<Group = So3>>(
     make: impl Fn() -> I,
